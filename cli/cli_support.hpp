@@ -1,0 +1,27 @@
+#pragma once
+// Pieces several subcommands share.
+#include <string>
+#include <vector>
+
+#include "sdfc/ir/module.hpp"
+
+namespace CLI {
+class App;
+}
+
+namespace sdfc::cli {
+
+// Options every scene command takes: the file and --set overrides.
+struct SceneArgs {
+  std::string path;
+  std::vector<std::string> sets;
+  void add_to(CLI::App& cmd);
+};
+
+// Writes text to `path` through a temporary file and a rename ("-" = stdout).
+void write_text_output(const std::string& path, const std::string& text);
+
+// The SIMD width to emit for a device: packets on CPUs, one pixel on GPUs.
+int default_simd_width(bool device_is_cpu);
+
+}  // namespace sdfc::cli

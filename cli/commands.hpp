@@ -1,0 +1,17 @@
+#pragma once
+// One function per subcommand; main.cpp wires them into CLI11.
+#include <CLI/CLI.hpp>
+
+namespace sdfc::cli {
+
+// Exit codes, documented in `sdfc --help` and docs/cli.md.
+enum Exit : int { kOk = 0, kSceneError = 1, kUsageError = 2, kDeviceError = 3, kOutputError = 4 };
+
+// Each registers its subcommand and returns the action to run when chosen.
+using Action = std::function<int()>;
+Action add_check(CLI::App& app);
+Action add_compile(CLI::App& app);
+Action add_render(CLI::App& app);
+Action add_devices(CLI::App& app);
+
+}  // namespace sdfc::cli

@@ -1,0 +1,37 @@
+#pragma once
+// Emits one OpenCL C kernel for a module. The generated kernel follows the
+// runtime's ABI (sdfrt/renderer.hpp):
+//   __kernel void sdfc_render(__global float* out, __global const float* frame,
+//       int img_w, int img_h, int tile_x0, int tile_y0, int tile_w, int tile_h, int out_stride)
+// Each work-item shades `simd_width` adjacent pixels: the stdlib is written
+// over `real`/`vec3`/`mask`, which the prelude defines per width and precision.
+#include <string>
+#include <vector>
+
+#include "sdfc/ir/module.hpp"
+
+namespace sdfc::codegen {
+
+struct EmitOptions {
+  int simd_width = 1;  // 1 (GPUs, one pixel per work-item) or 2/4/8/16 (CPU packets)
+  bool probe_kernel = false;  // also emit sdfc_probe, which evaluates the distance at given points
+};
+
+struct EmittedKernel {
+  std::string source;
+  std::string entry = "sdfc_render";
+  int simd_width = 1;
+  std::vector<std::string> planes;  // output planes, in order
+  int frame_floats = 0;             // length of the frame parameter block
+  std::vector<std::string> stdlib_functions;  // which stdlib functions it holds
+};
+
+EmittedKernel emit_opencl(const ir::Module& m, const EmitOptions& opt = {});
+
+// The frame parameter block (camera basis, pixel angle, time) the kernel
+// reads from `frame`; computed on the host per frame, so moving the camera
+// never recompiles. Layout is documented in frame_params.cpp.
+std::vector<float> frame_params(const ir::RenderPlan& plan, int width, int height, double time = 0);
+inline constexpr int kFrameFloats = 32;
+
+}  // namespace sdfc::codegen

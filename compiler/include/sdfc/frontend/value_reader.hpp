@@ -1,0 +1,74 @@
+#pragma once
+// Typed reads from the source tree with located errors. Every read reports
+// into a DiagnosticSink and returns a usable fallback, so one run can list
+// all independent mistakes.
+#include <array>
+#include <initializer_list>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "sdfc/source/source_value.hpp"
+
+namespace sdfc::frontend {
+
+using Vec3d = std::array<double, 3>;
+
+// The largest magnitude any scene number may have. Larger values only ever
+// come from typos and break float precision in the kernel.
+inline constexpr double kMaxMagnitude = 1e6;
+
+struct Range {
+  double lo = -kMaxMagnitude, hi = kMaxMagnitude;
+  bool lo_open = false;  // lo itself excluded
+  static Range positive(double hi = kMaxMagnitude) { return {0, hi, true}; }
+  static Range non_negative(double hi = kMaxMagnitude) { return {0, hi, false}; }
+  static Range closed(double lo, double hi) { return {lo, hi, false}; }
+};
+
+class ValueReader {
+ public:
+  explicit ValueReader(DiagnosticSink& sink) : sink_(sink) {}
+  DiagnosticSink& sink() { return sink_; }
+
+  double number(const SourceValue& v, std::string_view what, Range r = {});
+  int integer(const SourceValue& v, std::string_view what, int lo, int hi);
+  Vec3d vec3(const SourceValue& v, std::string_view what, Range r = {});
+  std::vector<double> vecn(const SourceValue& v, std::string_view what, size_t n, Range r = {});
+  // One of `choices`; reports with a suggestion otherwise.
+  std::string word(const SourceValue& v, std::string_view what, std::initializer_list<std::string_view> choices);
+  // A vector that must not be (near) zero; returned normalised.
+  Vec3d direction(const SourceValue& v, std::string_view what);
+
+ private:
+  DiagnosticSink& sink_;
+};
+
+// A map with a fixed set of allowed keys. Unknown keys are reported once,
+// with "did you mean" against the allowed ones.
+class MapReader {
+ public:
+  MapReader(ValueReader& r, const SourceValue& v, std::string_view what,
+            std::initializer_list<std::string_view> allowed);
+  bool ok() const { return ok_; }
+  const SourceValue* get(std::string_view key) const;
+  const SourceValue& self() const { return v_; }
+
+  double number(std::string_view key, double fallback, Range r = {});
+  int integer(std::string_view key, int fallback, int lo, int hi);
+  Vec3d vec3(std::string_view key, Vec3d fallback, Range r = {});
+  Vec3d direction(std::string_view key, Vec3d fallback);
+  std::string word(std::string_view key, std::string fallback, std::initializer_list<std::string_view> choices);
+  // Reports a missing required key at the map's location.
+  const SourceValue* require(std::string_view key);
+
+ private:
+  std::string path(std::string_view key) const;
+  ValueReader& r_;
+  const SourceValue& v_;
+  std::string what_;
+  bool ok_ = true;
+};
+
+}  // namespace sdfc::frontend

@@ -1,0 +1,30 @@
+#pragma once
+// Every pass is a free function Module -> Module in its own file; they run
+// as one flat list in pipeline.cpp (Halide's Lower.cpp style).
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "sdfc/ir/module.hpp"
+
+namespace sdfc::passes {
+
+ir::Module verify(ir::Module m);              // structural checks; throws on a broken IR
+ir::Module fold_constants(ir::Module m);      // merge/remove transforms, collapse one-child combinators
+ir::Module canonicalise(ir::Module m);        // flatten nested unions, sort commutative children, transforms outward
+ir::Module cse(ir::Module m);                 // rebuild through the hash-consing builder, drop unreachable nodes
+ir::Module infer_properties(ir::Module m);    // bounds, distance class, Lipschitz constant, cost
+ir::Module eliminate_dead(ir::Module m);      // unused materials, dark lights
+
+struct PassInfo {
+  std::string_view name;
+  ir::Module (*run)(ir::Module);
+};
+const std::vector<PassInfo>& pipeline();
+
+// Runs the pipeline; after each pass calls `after(name, module)` if given.
+using PassObserver = std::function<void(std::string_view, const ir::Module&)>;
+ir::Module run_pipeline(ir::Module m, const PassObserver& after = {});
+
+}  // namespace sdfc::passes

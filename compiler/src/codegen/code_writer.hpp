@@ -1,0 +1,44 @@
+#pragma once
+// Small helpers shared by the emitter's parts: literals in the kernel's
+// precision and an indenting line writer.
+#include <fmt/format.h>
+
+#include <string>
+
+#include "sdfc/ir/render_plan.hpp"
+
+namespace sdfc::codegen::detail {
+
+class Literals {
+ public:
+  explicit Literals(ir::Precision p) : p_(p) {}
+  // Shortest spelling that reads back exactly in the kernel's precision.
+  std::string real(double v) const {
+    std::string s = p_ == ir::Precision::Float ? fmt::format("{}", static_cast<float>(v)) : fmt::format("{}", v);
+    if (s.find_first_of(".en") == std::string::npos) s += ".0";
+    return p_ == ir::Precision::Float ? s + "f" : s;
+  }
+  std::string vec3(const ir::Vec3d& v) const { return "v3(" + real(v[0]) + ", " + real(v[1]) + ", " + real(v[2]) + ")"; }
+  // A real-typed constant (needed where both sides of select must be `real`).
+  std::string typed(double v) const { return "(real)(" + real(v) + ")"; }
+
+ private:
+  ir::Precision p_;
+};
+
+class CodeWriter {
+ public:
+  void line(const std::string& s) { out_ += std::string(indent_ * 4, ' ') + s + "\n"; }
+  void blank() { out_ += "\n"; }
+  void open(const std::string& s) { line(s); ++indent_; }
+  void close(const std::string& s = "}") { --indent_; line(s); }
+  int fresh() { return next_++; }
+  std::string take() { return std::move(out_); }
+
+ private:
+  std::string out_;
+  int indent_ = 0;
+  int next_ = 0;
+};
+
+}  // namespace sdfc::codegen::detail

@@ -1,0 +1,52 @@
+// The per-frame parameter block. Values the camera or time changes live here,
+// not in the kernel source, so a new frame never recompiles.
+//
+//   [0..2]  camera position (high part)   [3..5]  position (low part)
+//   [6..8]  forward, unit  (high)         [9..11] forward (low)
+//   [12..14] right * tan(fov/2) * aspect  [15..17] (low)
+//   [18..20] up * tan(fov/2)              [21..23] (low)
+//   [24]    pixel angle: 2 tan(fov/2) / height (pixel footprint per unit distance)
+//   [25]    time in seconds
+// Each vector is split into a float and the float of its remainder, so a
+// double-precision kernel reads the camera to ~48 bits through a float buffer.
+#include <cmath>
+#include <numbers>
+
+#include "sdfc/codegen/emit_opencl.hpp"
+
+namespace sdfc::codegen {
+
+namespace {
+using V = ir::Vec3d;
+V sub(V a, V b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+V cross(V a, V b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
+V scale(V a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
+V normalize(V a) { return scale(a, 1.0 / std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2])); }
+
+void put(std::vector<float>& f, int at, V v) {
+  for (int i = 0; i < 3; ++i) {
+    float hi = static_cast<float>(v[i]);
+    f[at + i] = hi;
+    f[at + 3 + i] = static_cast<float>(v[i] - double(hi));
+  }
+}
+}  // namespace
+
+std::vector<float> frame_params(const ir::RenderPlan& plan, int width, int height, double time) {
+  const ir::Camera& c = plan.camera;
+  V fw = normalize(sub(c.target, c.position));
+  V rt = normalize(cross(fw, c.up));
+  V up = cross(rt, fw);
+  double tan_half = std::tan(c.fov_degrees * std::numbers::pi / 360.0);
+  double aspect = double(width) / double(height);
+  std::vector<float> f(kFrameFloats, 0.0f);
+  put(f, 0, c.position);
+  put(f, 6, fw);
+  put(f, 12, scale(rt, tan_half * aspect));
+  put(f, 18, scale(up, tan_half));
+  f[24] = static_cast<float>(2.0 * tan_half / height);
+  f[25] = static_cast<float>(time);
+  return f;
+}
+
+}  // namespace sdfc::codegen

@@ -1,0 +1,45 @@
+// The types the width-generic stdlib is written against, for one SIMD width
+// and precision. At width 1 `real` is a scalar (a GPU work-item is one
+// pixel); at width N a work-item shades N pixels as one packet and `mask`
+// holds a lane mask, which every loop uses to freeze finished lanes.
+#include "prelude.hpp"
+
+#include <fmt/format.h>
+
+namespace sdfc::codegen::detail {
+
+std::string prelude(int width, ir::Precision precision) {
+  bool dbl = precision == ir::Precision::Double;
+  std::string scalar = dbl ? "double" : "float";
+  std::string m = dbl ? "long" : "int";  // vector comparisons give lanes as wide as the operands
+  std::string out;
+  if (dbl) out += "#pragma OPENCL EXTENSION cl_khr_fp64 : enable\n";
+  out += fmt::format("#define SDFC_WIDTH {}\n", width);
+  out += fmt::format("typedef {} scalar;\n", scalar);
+  if (width == 1) {
+    // Scalar comparisons give int whatever the operand type, and scalar
+    // select() wants a mask as wide as the operands, so width 1 uses ?: instead.
+    out += fmt::format("typedef {} real;\ntypedef int mask;\n", scalar);
+    out += "#define M_ANY(m) ((m) != 0)\n";
+    out += "#define SEL(a, b, m) ((m) ? (b) : (a))\n";
+    out += fmt::format("#define LANE_IDS (({})0)\n", scalar);
+    out += dbl ? "#define LOAD_REAL(ptr) ((double)*(ptr))\n#define STORE_REAL(v, ptr) (*(ptr) = (float)(v))\n"
+               : "#define LOAD_REAL(ptr) (*(ptr))\n#define STORE_REAL(v, ptr) (*(ptr) = (v))\n";
+  } else {
+    out += fmt::format("typedef {0}{1} real;\ntypedef {2}{1} mask;\n", scalar, width, m);
+    out += "#define M_ANY(m) any(m)\n";
+    out += "#define SEL(a, b, m) select((a), (b), (m))  /* per lane: m ? b : a */\n";
+    std::string lanes;
+    for (int i = 0; i < width; ++i) lanes += fmt::format("{}{}", i ? ", " : "", i);
+    out += fmt::format("#define LANE_IDS ((real)({}))\n", lanes);
+    out += dbl ? fmt::format("#define LOAD_REAL(ptr) convert_double{0}(vload{0}(0, (ptr)))\n"
+                             "#define STORE_REAL(v, ptr) vstore{0}(convert_float{0}(v), 0, (ptr))\n", width)
+               : fmt::format("#define LOAD_REAL(ptr) vload{0}(0, (ptr))\n#define STORE_REAL(v, ptr) vstore{0}((v), 0, (ptr))\n", width);
+  }
+  out += "#define M_TRUE ((mask)(-1))\n";
+  out += "#define K(x) ((scalar)(x))  /* a literal in the kernel's precision, for builtin arguments */\n";
+  out += "typedef struct { real x, y, z; } vec3;\n";
+  return out;
+}
+
+}  // namespace sdfc::codegen::detail

@@ -1,0 +1,13 @@
+#pragma once
+#include <set>
+#include <string>
+
+#include "code_writer.hpp"
+#include "sdfc/ir/module.hpp"
+
+namespace sdfc::codegen::detail {
+// Emits `real scene_dist(vec3 p)` and, if with_material,
+// `real scene_dist_mat(vec3 p, real* mat)`; adds the stdlib functions they
+// call to `used`.
+std::string emit_scene_functions(const ir::Module& m, const Literals& lit, std::set<std::string>& used);
+}  // namespace sdfc::codegen::detail

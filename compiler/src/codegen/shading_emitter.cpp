@@ -1,0 +1,79 @@
+#include "shading_emitter.hpp"
+
+#include <fmt/format.h>
+
+namespace sdfc::codegen::detail {
+
+namespace {
+
+std::string where(const SourceLoc& loc) {
+  if (loc.line <= 0) return "built-in";
+  std::string f = loc.file ? *loc.file : "";
+  size_t slash = f.find_last_of('/');
+  if (slash != std::string::npos) f = f.substr(slash + 1);
+  return fmt::format("{}:{}", f, loc.line);
+}
+
+}  // namespace
+
+std::string emit_shading(const ir::RenderPlan& plan, const Literals& lit, std::set<std::string>& used) {
+  CodeWriter w;
+  w.line("// ---- materials: id -> albedo, specular, shininess ----");
+  w.line("void material_of(real id, vec3* albedo, real* specular, real* shininess)");
+  w.open("{");
+  const auto& mats = plan.materials;
+  w.line(fmt::format("*albedo = {};  // material 0 '{}'", lit.vec3(mats[0].color), mats[0].name));
+  w.line(fmt::format("*specular = {};", lit.typed(mats[0].specular)));
+  w.line(fmt::format("*shininess = {};", lit.typed(mats[0].shininess)));
+  if (mats.size() == 1) w.line("(void)id;");
+  for (size_t i = 1; i < mats.size(); ++i) {
+    const auto& md = mats[i];
+    w.line(fmt::format("// material {} '{}' ({})", i, md.name, where(md.loc)));
+    w.line(fmt::format("mask is{} = id == {};", i, lit.real(double(i))));
+    w.line(fmt::format("*albedo = v3_select(*albedo, {}, is{});", lit.vec3(md.color), i));
+    w.line(fmt::format("*specular = SEL(*specular, {}, is{});", lit.typed(md.specular), i));
+    w.line(fmt::format("*shininess = SEL(*shininess, {}, is{});", lit.typed(md.shininess), i));
+  }
+  w.close("}");
+  w.blank();
+
+  w.line("// ---- lighting: v points from the surface to the eye ----");
+  w.line("vec3 shade_surface(vec3 p, vec3 n, vec3 v, real mat)");
+  w.open("{");
+  w.line("vec3 albedo;");
+  w.line("real specular, shininess;");
+  w.line("material_of(mat, &albedo, &specular, &shininess);");
+  ir::Vec3d ambient{0, 0, 0};
+  for (const auto& l : plan.lights)
+    if (l.kind == ir::LightKind::Ambient)
+      for (int i = 0; i < 3; ++i) ambient[i] += l.color[i] * l.intensity;
+  w.line(fmt::format("vec3 c = v3_mul(albedo, {});  // ambient, all ambient lights summed", lit.vec3(ambient)));
+  bool any_direct = false;
+  for (size_t i = 0; i < plan.lights.size(); ++i) {
+    const ir::Light& l = plan.lights[i];
+    ir::Vec3d radiance{l.color[0] * l.intensity, l.color[1] * l.intensity, l.color[2] * l.intensity};
+    if (l.kind == ir::LightKind::Directional) {
+      any_direct = true;
+      w.line(fmt::format("// light {}: directional ({})", i, where(l.loc)));
+      w.line(fmt::format("c = v3_add(c, shade_blinn_phong(n, {}, v, albedo, specular, shininess, {}));",
+                         lit.vec3({-l.direction[0], -l.direction[1], -l.direction[2]}), lit.vec3(radiance)));
+    } else if (l.kind == ir::LightKind::Point) {
+      any_direct = true;
+      w.line(fmt::format("// light {}: point, falls off with the squared distance ({})", i, where(l.loc)));
+      w.open("{");
+      w.line(fmt::format("vec3 l = v3_sub({}, p);", lit.vec3(l.position)));
+      w.line("real dist2 = fmax(v3_dot(l, l), K(1e-8f));");
+      w.line("l = v3_scale(l, rsqrt(dist2));");
+      w.line(fmt::format("c = v3_add(c, v3_scale(shade_blinn_phong(n, l, v, albedo, specular, shininess, {}), 1.0f / dist2));",
+                         lit.vec3(radiance)));
+      w.close("}");
+    }
+  }
+  if (any_direct) used.insert("shade_blinn_phong");
+  else w.line("(void)p; (void)n; (void)v;");
+  w.line("return c;");
+  w.close("}");
+  return w.take();
+}
+
+}  // namespace sdfc::codegen::detail

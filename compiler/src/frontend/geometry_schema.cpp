@@ -1,0 +1,222 @@
+#include "sdfc/frontend/geometry_schema.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <algorithm>
+#include <numbers>
+
+namespace sdfc::frontend {
+
+using ir::Kind;
+using ir::NodeId;
+
+const std::vector<std::string_view>& geometry_kinds() {
+  static const std::vector<std::string_view> k = {
+      "sphere", "box", "torus", "plane", "cylinder", "capsule", "mandelbulb", "union", "intersection",
+      "difference", "smooth_union", "smooth_intersection", "smooth_difference"};
+  return k;
+}
+
+const std::vector<std::string_view>& geometry_modifiers() {
+  static const std::vector<std::string_view> k = {"translate", "rotate", "scale", "material"};
+  return k;
+}
+
+namespace {
+
+bool contains(const std::vector<std::string_view>& v, std::string_view s) {
+  for (auto x : v)
+    if (x == s) return true;
+  return false;
+}
+
+using Mat3 = std::array<double, 9>;
+
+Mat3 mul(const Mat3& a, const Mat3& b) {
+  Mat3 r{};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) r[i * 3 + j] += a[i * 3 + k] * b[k * 3 + j];
+  return r;
+}
+
+// Rodrigues' formula: rotation by `deg` degrees about the unit axis.
+Mat3 axis_angle(const Vec3d& a, double deg) {
+  double t = deg * std::numbers::pi / 180.0, c = std::cos(t), s = std::sin(t), C = 1 - c;
+  double x = a[0], y = a[1], z = a[2];
+  return {c + x * x * C,     x * y * C - z * s, x * z * C + y * s,
+          y * x * C + z * s, c + y * y * C,     y * z * C - x * s,
+          z * x * C - y * s, z * y * C + x * s, c + z * z * C};
+}
+
+}  // namespace
+
+NodeId GeometryLowering::lower(const SourceValue& v) {
+  if (!v.is_map()) {
+    r_.sink().error(v.loc, "expected a geometry node (a map such as '{sphere: {radius: 1}}'), got " + v.kind_name(), "");
+    return ir::kNoNode;
+  }
+  const SourceValue* kind_key = nullptr;
+  const SourceValue* body = nullptr;
+  const auto& modifiers = geometry_modifiers();
+  for (const auto& [k, val] : v.entries) {
+    if (contains(modifiers, k.scalar)) continue;
+    if (contains(geometry_kinds(), k.scalar)) {
+      if (kind_key) {
+        r_.sink().error(k.loc, fmt::format("a geometry node has one kind, but this one has '{}' and '{}'",
+                                           kind_key->scalar, k.scalar),
+                        "put them in a union: '{union: [...]}'");
+        return ir::kNoNode;
+      }
+      kind_key = &k;
+      body = &val;
+      continue;
+    }
+    std::vector<std::string_view> all = geometry_kinds();
+    all.insert(all.end(), modifiers.begin(), modifiers.end());
+    std::string hint = did_you_mean(k.scalar, all);
+    if (hint.empty()) hint = "kinds: sphere, box, torus, plane, cylinder, capsule, mandelbulb, union, ...";
+    r_.sink().error(k.loc, fmt::format("unknown node kind '{}'", k.scalar), hint);
+    return ir::kNoNode;
+  }
+  if (!kind_key) {
+    r_.sink().error(v.loc, "this geometry node has modifiers but no kind", "add a kind such as 'sphere: {radius: 1}'");
+    return ir::kNoNode;
+  }
+  NodeId n = lower_kind(*kind_key, *body);
+  if (n == ir::kNoNode) return n;
+  return apply_modifiers(v, n);
+}
+
+NodeId GeometryLowering::lower_kind(const SourceValue& key, const SourceValue& body) {
+  const std::string& k = key.scalar;
+  const SourceLoc& at = key.loc;
+  std::string what = k;
+  // Combinators.
+  if (k == "union" || k == "intersection" || k == "difference") {
+    Kind kind = k == "union" ? Kind::Union : k == "intersection" ? Kind::Intersection : Kind::Difference;
+    return lower_children(kind, key, body, {});
+  }
+  if (k == "smooth_union" || k == "smooth_intersection" || k == "smooth_difference") {
+    MapReader m(r_, body, what, {"radius", "children"});
+    if (!m.ok()) return ir::kNoNode;
+    double radius = m.require("radius") ? m.number("radius", 0.1, Range::positive()) : 0.1;
+    const SourceValue* kids = m.require("children");
+    if (!kids) return ir::kNoNode;
+    Kind kind = k == "smooth_union" ? Kind::SmoothUnion : k == "smooth_intersection" ? Kind::SmoothIntersection : Kind::SmoothDifference;
+    return lower_children(kind, key, *kids, {radius});
+  }
+  // Primitives and fractals.
+  if (k == "sphere") {
+    MapReader m(r_, body, what, {"radius"});
+    return b_.make(Kind::Sphere, {m.number("radius", 1.0, Range::positive())}, {}, at);
+  }
+  if (k == "box") {
+    MapReader m(r_, body, what, {"size", "radius"});
+    Vec3d size = m.vec3("size", {1, 1, 1}, Range::positive());
+    double radius = m.number("radius", 0.0, Range::non_negative());
+    double smallest = std::min({size[0], size[1], size[2]});
+    if (radius > 0.5 * smallest && m.get("radius"))
+      r_.sink().error(m.get("radius")->loc, fmt::format("box.radius: {} is more than half the smallest side ({})", radius, smallest), "");
+    return b_.make(Kind::Box, {size[0] / 2, size[1] / 2, size[2] / 2, radius}, {}, at);
+  }
+  if (k == "torus") {
+    MapReader m(r_, body, what, {"major_radius", "minor_radius"});
+    double major = m.number("major_radius", 1.0, Range::positive());
+    double minor = m.number("minor_radius", 0.25, Range::positive());
+    return b_.make(Kind::Torus, {major, minor}, {}, at);
+  }
+  if (k == "plane") {
+    MapReader m(r_, body, what, {"normal", "offset"});
+    Vec3d n = m.direction("normal", {0, 0, 1});
+    return b_.make(Kind::Plane, {n[0], n[1], n[2], m.number("offset", 0.0)}, {}, at);
+  }
+  if (k == "cylinder") {
+    MapReader m(r_, body, what, {"radius", "height"});
+    double radius = m.number("radius", 0.5, Range::positive());
+    double height = m.number("height", 1.0, Range::positive());
+    return b_.make(Kind::Cylinder, {radius, height / 2}, {}, at);
+  }
+  if (k == "capsule") {
+    MapReader m(r_, body, what, {"a", "b", "radius"});
+    Vec3d a = m.vec3("a", {0, 0, -0.5}), bb = m.vec3("b", {0, 0, 0.5});
+    double radius = m.number("radius", 0.25, Range::positive());
+    return b_.make(Kind::Capsule, {a[0], a[1], a[2], bb[0], bb[1], bb[2], radius}, {}, at);
+  }
+  if (k == "mandelbulb") {
+    MapReader m(r_, body, what, {"power", "iterations", "bailout"});
+    double power = m.number("power", 8.0, Range::closed(1, 64));
+    int iterations = m.integer("iterations", 10, 1, 1000);
+    double bailout = m.number("bailout", 2.0, {0, 1e3, true});
+    return b_.make(Kind::Mandelbulb, {power, double(iterations), bailout}, {}, at);
+  }
+  r_.sink().error(at, fmt::format("unknown node kind '{}'", k), did_you_mean(k, geometry_kinds()));
+  return ir::kNoNode;
+}
+
+NodeId GeometryLowering::lower_children(Kind kind, const SourceValue& key, const SourceValue& list,
+                                        std::vector<double> params) {
+  std::string what(ir::info(kind).name);
+  if (!list.is_seq()) {
+    r_.sink().error(list.loc, fmt::format("{}: expected a list of geometry nodes, got {}", what, list.kind_name()), "");
+    return ir::kNoNode;
+  }
+  if (list.items.empty()) {
+    r_.sink().error(list.loc, fmt::format("{}: the list is empty", what), "give it at least one geometry node");
+    return ir::kNoNode;
+  }
+  std::vector<NodeId> kids;
+  bool bad = false;
+  for (const auto& item : list.items) {
+    NodeId c = lower(item);
+    bad = bad || c == ir::kNoNode;
+    kids.push_back(c);
+  }
+  if (bad) return ir::kNoNode;
+  return b_.make(kind, std::move(params), std::move(kids), key.loc);
+}
+
+NodeId GeometryLowering::apply_modifiers(const SourceValue& node, NodeId n) {
+  // Modifiers apply scale, then rotate, then translate, whatever their order
+  // in the file: p_world = T(R(S(p_local))).
+  if (const SourceValue* s = node.find("scale")) {
+    double f = r_.number(*s, "scale", {0, 1e4, true});
+    n = b_.make(Kind::Scale, {f}, {n}, s->loc);
+  }
+  if (const SourceValue* rot = node.find("rotate")) {
+    Mat3 m{1, 0, 0, 0, 1, 0, 0, 0, 1};
+    if (rot->is_seq()) {
+      Vec3d e = r_.vec3(*rot, "rotate", Range::closed(-36000, 36000));
+      // Degrees about X, then Y, then Z: R = Rz * Ry * Rx.
+      m = mul(axis_angle({0, 0, 1}, e[2]), mul(axis_angle({0, 1, 0}, e[1]), axis_angle({1, 0, 0}, e[0])));
+    } else {
+      MapReader mr(r_, *rot, "rotate", {"axis", "degrees"});
+      Vec3d axis = mr.require("axis") ? mr.direction("axis", {0, 0, 1}) : Vec3d{0, 0, 1};
+      double deg = mr.require("degrees") ? mr.number("degrees", 0, Range::closed(-36000, 36000)) : 0;
+      m = axis_angle(axis, deg);
+    }
+    n = b_.make(Kind::Rotate, std::vector<double>(m.begin(), m.end()), {n}, rot->loc);
+  }
+  if (const SourceValue* t = node.find("translate")) {
+    Vec3d v = r_.vec3(*t, "translate");
+    n = b_.make(Kind::Translate, {v[0], v[1], v[2]}, {n}, t->loc);
+  }
+  if (const SourceValue* mat = node.find("material")) {
+    if (!mat->is_scalar()) {
+      r_.sink().error(mat->loc, "material: expected a material name, got " + mat->kind_name(), "");
+      return n;
+    }
+    std::vector<std::string_view> names;
+    for (size_t i = 1; i < plan_.materials.size(); ++i) {
+      names.push_back(plan_.materials[i].name);
+      if (plan_.materials[i].name == mat->scalar) return b_.make(Kind::Material, {double(i)}, {n}, mat->loc);
+    }
+    std::string hint = did_you_mean(mat->scalar, names);
+    if (hint.empty()) hint = names.empty() ? "the scene defines no materials" : "define it under 'materials:'";
+    r_.sink().error(mat->loc, fmt::format("unknown material '{}'", mat->scalar), hint);
+  }
+  return n;
+}
+
+}  // namespace sdfc::frontend

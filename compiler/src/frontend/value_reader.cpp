@@ -1,0 +1,167 @@
+#include "sdfc/frontend/value_reader.hpp"
+
+#include <fmt/format.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+
+namespace sdfc::frontend {
+
+namespace {
+
+std::string range_text(const Range& r) {
+  if (r.lo == 0 && r.lo_open) return r.hi >= kMaxMagnitude ? "a positive number" : fmt::format("a positive number up to {}", r.hi);
+  if (r.lo == 0) return r.hi >= kMaxMagnitude ? "a number >= 0" : fmt::format("a number from 0 to {}", r.hi);
+  return fmt::format("a number from {} to {}", r.lo, r.hi);
+}
+
+}  // namespace
+
+double ValueReader::number(const SourceValue& v, std::string_view what, Range r) {
+  if (!v.is_scalar() || v.quoted) {
+    std::string hint = v.quoted ? "remove the quotes" : "";
+    sink_.error(v.loc, fmt::format("{}: expected a number, got {}", what, v.kind_name()), hint);
+    return r.lo_open ? r.lo + 1 : std::max(r.lo, std::min(r.hi, 1.0));
+  }
+  const std::string& s = v.scalar;
+  // YAML spells infinity and NaN as .inf/.nan; strtod knows inf/nan. Both are refused.
+  std::string lower;
+  for (char c : s) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (lower.find("nan") != std::string::npos || lower.find("inf") != std::string::npos) {
+    sink_.error(v.loc, fmt::format("{}: {} is not a finite number", what, s), "");
+    return 1;
+  }
+  errno = 0;
+  char* end = nullptr;
+  double x = std::strtod(s.c_str(), &end);
+  if (s.empty() || end != s.c_str() + s.size()) {
+    sink_.error(v.loc, fmt::format("{}: expected a number, got '{}'", what, s), "");
+    return 1;
+  }
+  if (errno == ERANGE || !std::isfinite(x) || std::fabs(x) > kMaxMagnitude) {
+    sink_.error(v.loc, fmt::format("{}: {} is too large (the limit is {:g})", what, s, kMaxMagnitude), "");
+    return 1;
+  }
+  bool below = r.lo_open ? x <= r.lo : x < r.lo;
+  if (below || x > r.hi) {
+    sink_.error(v.loc, fmt::format("{}: expected {}, got {}", what, range_text(r), s), "");
+    return r.lo_open ? r.lo + 1 : std::max(r.lo, std::min(r.hi, 1.0));
+  }
+  return x;
+}
+
+int ValueReader::integer(const SourceValue& v, std::string_view what, int lo, int hi) {
+  if (!v.is_scalar() || v.quoted || v.scalar.find_first_not_of("+-0123456789") != std::string::npos ||
+      v.scalar.empty()) {
+    sink_.error(v.loc, fmt::format("{}: expected a whole number, got {}", what, v.kind_name()), "");
+    return lo;
+  }
+  errno = 0;
+  long long x = std::strtoll(v.scalar.c_str(), nullptr, 10);
+  if (errno == ERANGE || x < lo || x > hi) {
+    sink_.error(v.loc, fmt::format("{}: expected a whole number from {} to {}, got {}", what, lo, hi, v.scalar), "");
+    return lo;
+  }
+  return static_cast<int>(x);
+}
+
+std::vector<double> ValueReader::vecn(const SourceValue& v, std::string_view what, size_t n, Range r) {
+  std::vector<double> out(n, r.lo_open ? r.lo + 1 : std::max(r.lo, std::min(r.hi, 0.0)));
+  if (!v.is_seq() || v.items.size() != n) {
+    std::string example = n == 3 ? "[x, y, z]" : n == 4 ? "[a, b, c, d]" : "a list";
+    sink_.error(v.loc, fmt::format("{}: expected a list of {} numbers {}, got {}", what, n, example, v.kind_name()), "");
+    return out;
+  }
+  for (size_t i = 0; i < n; ++i) out[i] = number(v.items[i], what, r);
+  return out;
+}
+
+Vec3d ValueReader::vec3(const SourceValue& v, std::string_view what, Range r) {
+  auto x = vecn(v, what, 3, r);
+  return {x[0], x[1], x[2]};
+}
+
+Vec3d ValueReader::direction(const SourceValue& v, std::string_view what) {
+  Vec3d d = vec3(v, what);
+  double len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  if (len < 1e-9) {
+    if (v.is_seq() && v.items.size() == 3)
+      sink_.error(v.loc, fmt::format("{}: a direction must not have zero length", what), "");
+    return {0, 0, 1};
+  }
+  return {d[0] / len, d[1] / len, d[2] / len};
+}
+
+std::string ValueReader::word(const SourceValue& v, std::string_view what, std::initializer_list<std::string_view> choices) {
+  std::vector<std::string_view> list(choices);
+  std::string all;
+  for (auto c : list) all += (all.empty() ? "" : ", ") + std::string(c);
+  if (!v.is_scalar()) {
+    sink_.error(v.loc, fmt::format("{}: expected one of {}, got {}", what, all, v.kind_name()), "");
+    return std::string(list.front());
+  }
+  for (auto c : list)
+    if (v.scalar == c) return v.scalar;
+  sink_.error(v.loc, fmt::format("{}: expected one of {}, got '{}'", what, all, v.scalar), did_you_mean(v.scalar, list));
+  return std::string(list.front());
+}
+
+MapReader::MapReader(ValueReader& r, const SourceValue& v, std::string_view what,
+                     std::initializer_list<std::string_view> allowed)
+    : r_(r), v_(v), what_(what) {
+  if (!v.is_map()) {
+    r_.sink().error(v.loc, fmt::format("{}: expected a map of settings, got {}", what, v.kind_name()), "");
+    ok_ = false;
+    return;
+  }
+  std::vector<std::string_view> keys(allowed);
+  for (const auto& [k, val] : v.entries) {
+    bool known = false;
+    for (auto a : keys) known = known || k.scalar == a;
+    if (!known) {
+      std::string all;
+      for (auto a : keys) all += (all.empty() ? "" : ", ") + std::string(a);
+      std::string hint = did_you_mean(k.scalar, keys);
+      if (hint.empty()) hint = "allowed: " + all;
+      r_.sink().error(k.loc, fmt::format("unknown key '{}' in {}", k.scalar, what), hint);
+    }
+  }
+}
+
+std::string MapReader::path(std::string_view key) const { return what_ + "." + std::string(key); }
+
+const SourceValue* MapReader::get(std::string_view key) const { return ok_ ? v_.find(key) : nullptr; }
+
+const SourceValue* MapReader::require(std::string_view key) {
+  const SourceValue* v = get(key);
+  if (!v && ok_) r_.sink().error(v_.loc, fmt::format("{}: missing required key '{}'", what_, key), "");
+  return v;
+}
+
+double MapReader::number(std::string_view key, double fallback, Range r) {
+  const SourceValue* v = get(key);
+  return v ? r_.number(*v, path(key), r) : fallback;
+}
+
+int MapReader::integer(std::string_view key, int fallback, int lo, int hi) {
+  const SourceValue* v = get(key);
+  return v ? r_.integer(*v, path(key), lo, hi) : fallback;
+}
+
+Vec3d MapReader::vec3(std::string_view key, Vec3d fallback, Range r) {
+  const SourceValue* v = get(key);
+  return v ? r_.vec3(*v, path(key), r) : fallback;
+}
+
+Vec3d MapReader::direction(std::string_view key, Vec3d fallback) {
+  const SourceValue* v = get(key);
+  return v ? r_.direction(*v, path(key)) : fallback;
+}
+
+std::string MapReader::word(std::string_view key, std::string fallback, std::initializer_list<std::string_view> choices) {
+  const SourceValue* v = get(key);
+  return v ? r_.word(*v, path(key), choices) : fallback;
+}
+
+}  // namespace sdfc::frontend

@@ -1,0 +1,118 @@
+// infer_properties: bottom-up bounds, distance class, Lipschitz constant and
+// cost for every node. Bounds are where the surface can be (outside them the
+// distance is positive); the emitter uses the root's for the ray interval.
+#include <algorithm>
+#include <cmath>
+
+#include "sdfc/ir/fractal_math.hpp"
+#include "sdfc/passes/passes.hpp"
+
+namespace sdfc::passes {
+
+namespace {
+
+using ir::Box3;
+using ir::DistanceClass;
+using ir::Kind;
+
+Box3 box(double x0, double y0, double z0, double x1, double y1, double z1) { return {{x0, y0, z0}, {x1, y1, z1}}; }
+
+// The less trustworthy of two classes (exact < bound < estimate < lipschitz).
+DistanceClass worse(DistanceClass a, DistanceClass b) { return int(a) > int(b) ? a : b; }
+
+Box3 rotated(const Box3& b, const std::vector<double>& m) {
+  if (!b.finite()) return Box3::everything();
+  Box3 r{{Box3::inf(), Box3::inf(), Box3::inf()}, {-Box3::inf(), -Box3::inf(), -Box3::inf()}};
+  for (int corner = 0; corner < 8; ++corner) {
+    double p[3] = {corner & 1 ? b.hi[0] : b.lo[0], corner & 2 ? b.hi[1] : b.lo[1], corner & 4 ? b.hi[2] : b.lo[2]};
+    for (int i = 0; i < 3; ++i) {
+      double v = m[i * 3] * p[0] + m[i * 3 + 1] * p[1] + m[i * 3 + 2] * p[2];
+      r.lo[i] = std::min(r.lo[i], v);
+      r.hi[i] = std::max(r.hi[i], v);
+    }
+  }
+  return r;
+}
+
+ir::Props infer(const ir::Graph& g, const ir::Node& n) {
+  ir::Props p;
+  p.known = true;
+  const auto& q = n.params;
+  auto kid = [&](size_t i) -> const ir::Props& { return g.node(n.children[i]).props; };
+  switch (n.kind) {
+    case Kind::Sphere: p.bounds = Box3::cube(q[0]); p.cost = 6; break;
+    case Kind::Box: p.bounds = box(-q[0], -q[1], -q[2], q[0], q[1], q[2]); p.cost = 16; break;
+    case Kind::Torus: {
+      double r = q[0] + q[1];
+      p.bounds = box(-r, -r, -q[1], r, r, q[1]);
+      p.cost = 10;
+      break;
+    }
+    case Kind::Plane: p.bounds = Box3::everything(); p.cost = 5; break;
+    case Kind::Cylinder: p.bounds = box(-q[0], -q[0], -q[1], q[0], q[0], q[1]); p.cost = 12; break;
+    case Kind::Capsule: {
+      double r = q[6];
+      p.bounds = box(std::min(q[0], q[3]) - r, std::min(q[1], q[4]) - r, std::min(q[2], q[5]) - r,
+                     std::max(q[0], q[3]) + r, std::max(q[1], q[4]) + r, std::max(q[2], q[5]) + r);
+      p.cost = 18;
+      break;
+    }
+    case Kind::Mandelbulb:
+      // The estimator is a bound in practice but not provably; L = 1 assumed.
+      p.bounds = Box3::cube(ir::mandelbulb_set_radius(q[0]));
+      p.cls = DistanceClass::Estimate;
+      p.cost = 10 + q[1] * 45;
+      break;
+    case Kind::Translate: {
+      p = kid(0);
+      for (int i = 0; i < 3; ++i) p.bounds.lo[i] += q[i], p.bounds.hi[i] += q[i];
+      p.cost += 3;
+      break;
+    }
+    case Kind::Rotate:
+      p = kid(0);
+      p.bounds = rotated(p.bounds, q);
+      p.cost += 15;
+      break;
+    case Kind::Scale:
+      p = kid(0);
+      for (int i = 0; i < 3; ++i) p.bounds.lo[i] *= q[0], p.bounds.hi[i] *= q[0];
+      p.cost += 4;
+      break;
+    case Kind::Material: p = kid(0); p.cost += 1; break;
+    case Kind::Union:
+    case Kind::Intersection:
+    case Kind::Difference:
+    case Kind::SmoothUnion:
+    case Kind::SmoothIntersection:
+    case Kind::SmoothDifference: {
+      // min/max of distances is a bound (exact outside for a union, not inside).
+      p.cls = DistanceClass::Bound;
+      p.lipschitz = 0;
+      p.bounds = kid(0).bounds;
+      for (size_t i = 0; i < n.children.size(); ++i) {
+        const ir::Props& c = kid(i);
+        p.cls = worse(p.cls, c.cls);
+        p.lipschitz = std::max(p.lipschitz, c.lipschitz);
+        p.cost += c.cost + 2;
+        if (i == 0) continue;
+        if (n.kind == Kind::Union || n.kind == Kind::SmoothUnion) p.bounds = p.bounds.united(c.bounds);
+        if (n.kind == Kind::Intersection || n.kind == Kind::SmoothIntersection) p.bounds = p.bounds.intersected(c.bounds);
+      }
+      // A smooth union adds at most radius/4 of material beyond its children.
+      if (n.kind == Kind::SmoothUnion && p.bounds.finite()) p.bounds = p.bounds.padded(q[0] * 0.25);
+      break;
+    }
+  }
+  return p;
+}
+
+}  // namespace
+
+ir::Module infer_properties(ir::Module m) {
+  ir::Graph& g = *m.graph;
+  for (ir::NodeId id : g.postorder(m.root)) g.mutable_node(id).props = infer(g, g.node(id));
+  return m;
+}
+
+}  // namespace sdfc::passes

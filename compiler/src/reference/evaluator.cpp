@@ -1,0 +1,129 @@
+// CPU reference evaluator: the IR's distance in double precision, written
+// from the formulas, not from the OpenCL stdlib, so the two check each other.
+#include "sdfc/reference/evaluator.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "sdfc/ir/fractal_math.hpp"
+
+namespace sdfc::reference {
+
+namespace {
+
+using ir::Kind;
+
+double len(double x, double y, double z) { return std::sqrt(x * x + y * y + z * z); }
+
+double mandelbulb(const Vec3& p, double power, int iterations, double bailout) {
+  double zx = p[0], zy = p[1], zz = p[2];
+  double dr = 1.0, r = len(zx, zy, zz);
+  for (int i = 0; i < iterations && r < bailout; ++i) {
+    double rs = std::max(r, 1e-20);
+    double theta = std::acos(std::clamp(zz / rs, -1.0, 1.0)) * power;
+    double phi = std::atan2(zy, zx) * power;
+    double rp = std::pow(rs, power - 1.0);
+    dr = rp * power * dr + 1.0;
+    double zr = rp * rs;
+    zx = zr * std::sin(theta) * std::cos(phi) + p[0];
+    zy = zr * std::sin(theta) * std::sin(phi) + p[1];
+    zz = zr * std::cos(theta) + p[2];
+    r = len(zx, zy, zz);
+  }
+  double r0 = len(p[0], p[1], p[2]);
+  double set_radius = ir::mandelbulb_set_radius(power);
+  // Far field: distance to the ball that holds the set (the estimator overshoots there).
+  if (r0 > 1.5 * set_radius) return r0 - set_radius;
+  return 0.5 * std::log(std::max(r, 1e-20)) * r / dr;
+}
+
+double smin_poly(double a, double b, double k) {
+  double h = std::max(k - std::fabs(a - b), 0.0) / k;
+  return std::min(a, b) - h * h * k / 4;
+}
+double smax_poly(double a, double b, double k) {
+  double h = std::max(k - std::fabs(a - b), 0.0) / k;
+  return std::max(a, b) + h * h * k / 4;
+}
+
+}  // namespace
+
+Sample evaluate(const ir::Graph& g, ir::NodeId id, const Vec3& p) {
+  const ir::Node& n = g.node(id);
+  const auto& q = n.params;
+  switch (n.kind) {
+    case Kind::Sphere: return {len(p[0], p[1], p[2]) - q[0], 0};
+    case Kind::Box: {
+      double r = q[3];
+      double dx = std::fabs(p[0]) - q[0] + r, dy = std::fabs(p[1]) - q[1] + r, dz = std::fabs(p[2]) - q[2] + r;
+      double outside = len(std::max(dx, 0.0), std::max(dy, 0.0), std::max(dz, 0.0));
+      double inside = std::min(std::max({dx, dy, dz}), 0.0);
+      return {outside + inside - r, 0};
+    }
+    case Kind::Torus: {
+      double ring = std::hypot(p[0], p[1]) - q[0];
+      return {std::hypot(ring, p[2]) - q[1], 0};
+    }
+    case Kind::Plane: return {p[0] * q[0] + p[1] * q[1] + p[2] * q[2] - q[3], 0};
+    case Kind::Cylinder: {
+      double dr = std::hypot(p[0], p[1]) - q[0], dz = std::fabs(p[2]) - q[1];
+      return {std::min(std::max(dr, dz), 0.0) + std::hypot(std::max(dr, 0.0), std::max(dz, 0.0)), 0};
+    }
+    case Kind::Capsule: {
+      double pa[3] = {p[0] - q[0], p[1] - q[1], p[2] - q[2]};
+      double ba[3] = {q[3] - q[0], q[4] - q[1], q[5] - q[2]};
+      double bb = ba[0] * ba[0] + ba[1] * ba[1] + ba[2] * ba[2];
+      double h = bb > 0 ? std::clamp((pa[0] * ba[0] + pa[1] * ba[1] + pa[2] * ba[2]) / bb, 0.0, 1.0) : 0.0;
+      return {len(pa[0] - ba[0] * h, pa[1] - ba[1] * h, pa[2] - ba[2] * h) - q[6], 0};
+    }
+    case Kind::Mandelbulb: return {mandelbulb(p, q[0], int(q[1]), q[2]), 0};
+    case Kind::Translate: return evaluate(g, n.children[0], {p[0] - q[0], p[1] - q[1], p[2] - q[2]});
+    case Kind::Rotate: {
+      // Stored local->world; apply the transpose to go world->local.
+      Vec3 l{q[0] * p[0] + q[3] * p[1] + q[6] * p[2], q[1] * p[0] + q[4] * p[1] + q[7] * p[2],
+             q[2] * p[0] + q[5] * p[1] + q[8] * p[2]};
+      return evaluate(g, n.children[0], l);
+    }
+    case Kind::Scale: {
+      Sample s = evaluate(g, n.children[0], {p[0] / q[0], p[1] / q[0], p[2] / q[0]});
+      return {s.distance * q[0], s.material};
+    }
+    case Kind::Material: {
+      Sample s = evaluate(g, n.children[0], p);
+      return {s.distance, s.material != 0 ? s.material : int(q[0])};
+    }
+    case Kind::Union:
+    case Kind::SmoothUnion:
+    case Kind::Intersection:
+    case Kind::SmoothIntersection:
+    case Kind::Difference:
+    case Kind::SmoothDifference: {
+      Sample acc = evaluate(g, n.children[0], p);
+      for (size_t i = 1; i < n.children.size(); ++i) {
+        Sample s = evaluate(g, n.children[i], p);
+        switch (n.kind) {
+          case Kind::Union:
+            if (s.distance < acc.distance) acc = s;
+            break;
+          case Kind::SmoothUnion:
+            acc = {smin_poly(acc.distance, s.distance, q[0]), s.distance < acc.distance ? s.material : acc.material};
+            break;
+          case Kind::Intersection:
+            if (s.distance > acc.distance) acc = s;
+            break;
+          case Kind::SmoothIntersection:
+            acc = {smax_poly(acc.distance, s.distance, q[0]), s.distance > acc.distance ? s.material : acc.material};
+            break;
+          case Kind::Difference: acc.distance = std::max(acc.distance, -s.distance); break;
+          case Kind::SmoothDifference: acc.distance = smax_poly(acc.distance, -s.distance, q[0]); break;
+          default: break;
+        }
+      }
+      return acc;
+    }
+  }
+  return {0, 0};
+}
+
+}  // namespace sdfc::reference

@@ -1,0 +1,103 @@
+#include "sdfc/source/yaml_loader.hpp"
+
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace sdfc {
+
+namespace {
+
+// Deeper than any sensible scene; stops a hostile file from exhausting the stack.
+constexpr int kMaxDepth = 200;
+
+SourceLoc loc_of(const YAML::Mark& m, const std::shared_ptr<const std::string>& file) {
+  return {file, m.line >= 0 ? m.line + 1 : 0, m.column >= 0 ? m.column + 1 : 0};
+}
+
+SourceValue convert(const YAML::Node& n, const std::shared_ptr<const std::string>& file, int depth) {
+  SourceValue v;
+  v.loc = loc_of(n.Mark(), file);
+  if (depth > kMaxDepth)
+    fail(v.loc, fmt::format("the scene nests deeper than {} levels", kMaxDepth), "");
+  switch (n.Type()) {
+    case YAML::NodeType::Undefined:
+    case YAML::NodeType::Null: v.kind = SourceValue::Kind::Null; break;
+    case YAML::NodeType::Scalar:
+      v.kind = SourceValue::Kind::Scalar;
+      v.scalar = n.Scalar();
+      v.quoted = n.Tag() == "!";
+      break;
+    case YAML::NodeType::Sequence:
+      v.kind = SourceValue::Kind::Sequence;
+      for (const auto& item : n) v.items.push_back(convert(item, file, depth + 1));
+      break;
+    case YAML::NodeType::Map:
+      v.kind = SourceValue::Kind::Map;
+      for (const auto& kv : n) {
+        SourceValue key = convert(kv.first, file, depth + 1);
+        if (!key.is_scalar())
+          fail(key.loc, "a map key must be a plain word, not " + key.kind_name(), "");
+        if (v.find(key.scalar))
+          fail(key.loc, "duplicate key '" + key.scalar + "'", "each key may appear once in a map");
+        v.entries.emplace_back(std::move(key), convert(kv.second, file, depth + 1));
+      }
+      break;
+  }
+  return v;
+}
+
+}  // namespace
+
+
+SourceValue load_yaml_text(const std::string& text, const std::string& name) {
+  auto file = std::make_shared<const std::string>(name);
+  // yaml-cpp accepts some binary input silently; reject it with a clear message.
+  for (size_t i = 0; i < text.size(); ++i) {
+    unsigned char c = static_cast<unsigned char>(text[i]);
+    if (c == 0 || (c < 0x20 && c != '\n' && c != '\r' && c != '\t')) {
+      int line = 1, col = 1;
+      for (size_t j = 0; j < i; ++j) text[j] == '\n' ? (++line, col = 1) : ++col;
+      fail(SourceLoc(file, line, col), fmt::format("this is not a text file (control byte 0x{:02x})", c), "a scene is a YAML text file");
+    }
+  }
+  // YAML forbids tabs in indentation; yaml-cpp reports them late and vaguely,
+  // so point at the first one ourselves.
+  for (size_t i = 0, line = 1; i < text.size(); ++line) {
+    size_t end = text.find('\n', i);
+    if (end == std::string::npos) end = text.size();
+    size_t first = text.find_first_not_of(' ', i);
+    if (first < end && text[first] == '\t')
+      fail(SourceLoc(file, int(line), int(first - i + 1)), "a tab in the indentation", "YAML indents with spaces only; use spaces");
+    i = end + 1;
+  }
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    fail(loc_of(e.mark, file), "YAML syntax error: " + e.msg);
+  }
+  if (!root.IsDefined() || root.IsNull())
+    fail(SourceLoc(file, 1, 1), "the scene file is empty", "a scene needs at least a 'scene:' key");
+  return convert(root, file, 0);
+}
+
+SourceValue load_yaml_file(const std::string& path) {
+  auto file = std::make_shared<const std::string>(path);
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec))
+    fail(SourceLoc(file, 0, 0), "no such file", "");
+  if (std::filesystem::is_directory(path, ec))
+    fail(SourceLoc(file, 0, 0), "this is a directory, not a scene file", "");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) fail(SourceLoc(file, 0, 0), "cannot read the file (permission denied?)", "");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  if (in.bad()) fail(SourceLoc(file, 0, 0), "error while reading the file", "");
+  return load_yaml_text(ss.str(), path);
+}
+
+}  // namespace sdfc

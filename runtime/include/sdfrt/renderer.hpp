@@ -1,0 +1,82 @@
+#pragma once
+// Runs an sdfc kernel tile by tile and assembles a FloatImage.
+//
+// Kernel ABI (fixed, emitted by the compiler):
+//   __kernel void sdfc_render(__global float* out, __global const float* frame,
+//       const int img_w, const int img_h, const int tile_x0, const int tile_y0,
+//       const int tile_w, const int tile_h, const int out_stride)
+// Work-item (gx, gy) covers pixels x = tile_x0 + gx*simd_width + lane,
+// y = tile_y0 + gy and stores plane k of pixel (x-tile_x0, y-tile_y0) at
+// out[k*out_stride*tile_h + (y-tile_y0)*out_stride + (x-tile_x0)].
+#include <sdfrt/device.hpp>
+#include <sdfrt/float_image.hpp>
+#include <sdfrt/program.hpp>
+
+#include <atomic>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace sdfrt {
+
+constexpr int kMaxImageSide = 16384;
+
+struct KernelSpec {
+  std::string source;
+  std::string entry = "sdfc_render";
+  int simd_width = 1;
+  std::vector<std::string> planes;  // e.g. {"r","g","b","depth"}
+  std::string build_options;
+};
+
+struct RenderOptions {
+  int tile_width = 256;   // clamped at the image edges
+  int tile_height = 256;
+  std::function<void(int done, int total)> progress;  // called with (0,total) first, then per tile
+  std::atomic<bool>* cancel = nullptr;               // checked before every tile
+  // Launch edge tiles with the full tile size too (tile_w/tile_h/out_stride
+  // then describe the full tile; pixels past the image are computed and
+  // dropped). PoCL compiles a work-group function per launch shape, so this
+  // trades some wasted pixels for one compile instead of up to four.
+  bool uniform_launch = false;
+};
+
+struct RenderStats {
+  double total_ms = 0.0;   // wall time of render()
+  double kernel_ms = 0.0;  // sum of kernel execution times (profiling events)
+  int tiles = 0;
+};
+
+class Renderer {
+ public:
+  // Builds the program once (through the binary cache). Throws BuildError.
+  Renderer(Device& device, const KernelSpec& spec);
+
+  // Renders the full image. Throws std::invalid_argument for bad sizes,
+  // Cancelled when the cancel flag is set, DeviceError on OpenCL failures.
+  FloatImage render(const std::vector<float>& frame, int width, int height,
+                    const RenderOptions& options = {}, RenderStats* stats = nullptr);
+
+  const BuildStats& build_stats() const noexcept { return build_stats_; }
+  const RenderStats& last_render_stats() const noexcept { return last_stats_; }
+  const KernelSpec& spec() const noexcept { return spec_; }
+  Device& device() const noexcept { return *device_; }
+
+ private:
+  void ensure_out_buffer(std::size_t floats);
+  void upload_frame(const std::vector<float>& frame);
+
+  Device* device_;
+  KernelSpec spec_;
+  BuildStats build_stats_;
+  std::optional<Program> program_;
+  std::optional<Kernel> kernel_;
+  BufferHandle out_buffer_;
+  std::size_t out_buffer_floats_ = 0;
+  BufferHandle frame_buffer_;
+  std::size_t frame_buffer_floats_ = 0;
+  RenderStats last_stats_;
+};
+
+}  // namespace sdfrt

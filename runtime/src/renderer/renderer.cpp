@@ -1,0 +1,173 @@
+#include <sdfrt/renderer.hpp>
+
+#include "device/cl_check.hpp"
+#include "renderer/tile_plan.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <climits>
+#include <cstring>
+#include <stdexcept>
+
+namespace sdfrt {
+namespace {
+
+int ceil_div(int a, int b) { return (a + b - 1) / b; }
+
+double ms_between(std::chrono::steady_clock::time_point a, std::chrono::steady_clock::time_point b) {
+  return std::chrono::duration<double, std::milli>(b - a).count();
+}
+
+double event_ms(cl_event event) {
+  cl_ulong start = 0, end = 0;
+  check_cl(clGetEventProfilingInfo(event, CL_PROFILING_COMMAND_START, sizeof(start), &start, nullptr),
+           "clGetEventProfilingInfo(START)");
+  check_cl(clGetEventProfilingInfo(event, CL_PROFILING_COMMAND_END, sizeof(end), &end, nullptr),
+           "clGetEventProfilingInfo(END)");
+  return end > start ? static_cast<double>(end - start) * 1e-6 : 0.0;
+}
+
+// Argument indices of the fixed kernel ABI.
+enum Arg : unsigned { kOut, kFrame, kImgW, kImgH, kTileX0, kTileY0, kTileW, kTileH, kOutStride };
+
+}  // namespace
+
+Renderer::Renderer(Device& device, const KernelSpec& spec) : device_(&device), spec_(spec) {
+  if (spec_.simd_width < 1) {
+    throw std::invalid_argument(
+        fmt::format("KernelSpec.simd_width must be at least 1, got {}", spec_.simd_width));
+  }
+  if (spec_.planes.empty()) {
+    throw std::invalid_argument("KernelSpec.planes is empty: the kernel must output at least one plane");
+  }
+  program_.emplace(build_program(device, spec_.source, spec_.build_options, &build_stats_));
+  kernel_.emplace(program_->kernel(spec_.entry));
+}
+
+void Renderer::ensure_out_buffer(std::size_t floats) {
+  if (out_buffer_ && out_buffer_floats_ >= floats) return;
+  cl_int status = CL_SUCCESS;
+  out_buffer_.reset();  // free the old one first; device memory may be tight
+  out_buffer_floats_ = 0;
+  out_buffer_.reset(clCreateBuffer(device_->context(), CL_MEM_WRITE_ONLY, floats * sizeof(float),
+                                   nullptr, &status));
+  check_cl(status, fmt::format("clCreateBuffer(output tile, {} bytes)", floats * sizeof(float)));
+  out_buffer_floats_ = floats;
+}
+
+void Renderer::upload_frame(const std::vector<float>& frame) {
+  // An empty frame still needs a valid buffer argument.
+  const std::size_t floats = std::max<std::size_t>(frame.size(), 1);
+  cl_int status = CL_SUCCESS;
+  if (!frame_buffer_ || frame_buffer_floats_ != floats) {
+    frame_buffer_.reset();
+    frame_buffer_.reset(clCreateBuffer(device_->context(), CL_MEM_READ_ONLY,
+                                       floats * sizeof(float), nullptr, &status));
+    check_cl(status, "clCreateBuffer(frame parameters)");
+    frame_buffer_floats_ = floats;
+  }
+  const float zero = 0.0f;
+  const void* src = frame.empty() ? &zero : frame.data();
+  check_cl(clEnqueueWriteBuffer(device_->queue(), frame_buffer_.get(), CL_TRUE, 0,
+                                floats * sizeof(float), src, 0, nullptr, nullptr),
+           "clEnqueueWriteBuffer(frame parameters)");
+}
+
+FloatImage Renderer::render(const std::vector<float>& frame, int width, int height,
+                            const RenderOptions& options, RenderStats* stats_out) {
+  const auto start = std::chrono::steady_clock::now();
+  const TilePlan plan = plan_tiles(width, height, options.tile_width, options.tile_height);
+  const int simd = spec_.simd_width;
+  const std::size_t planes = spec_.planes.size();
+
+  // The largest tile decides the buffer; refuse before allocating anything.
+  const std::size_t max_stride = static_cast<std::size_t>(ceil_div(plan.max_width, simd)) * simd;
+  const std::size_t max_floats = planes * max_stride * static_cast<std::size_t>(plan.max_height);
+  const std::uint64_t max_bytes = max_floats * sizeof(float);
+  if (max_bytes > device_->info().max_alloc_bytes) {
+    throw std::invalid_argument(fmt::format(
+        "a {}x{} tile with {} planes needs a {:.1f} MiB buffer, more than the device's maximum "
+        "allocation of {:.1f} MiB; use smaller tiles",
+        plan.max_width, plan.max_height, planes, max_bytes / 1048576.0,
+        device_->info().max_alloc_bytes / 1048576.0));
+  }
+  if (max_floats > static_cast<std::size_t>(INT_MAX)) {
+    // The kernel indexes `out` with int arithmetic.
+    throw std::invalid_argument(fmt::format(
+        "a {}x{} tile with {} planes has more than 2^31 samples; use smaller tiles",
+        plan.max_width, plan.max_height, planes));
+  }
+
+  FloatImage image(width, height, spec_.planes);
+  ensure_out_buffer(max_floats);
+  upload_frame(frame);
+
+  Kernel& kernel = *kernel_;
+  cl_mem out = out_buffer_.get();
+  cl_mem frame_mem = frame_buffer_.get();
+  kernel.set_arg(kOut, out);
+  kernel.set_arg(kFrame, frame_mem);
+  kernel.set_arg(kImgW, static_cast<cl_int>(width));
+  kernel.set_arg(kImgH, static_cast<cl_int>(height));
+
+  RenderStats stats;
+  const int total = static_cast<int>(plan.tiles.size());
+  if (options.progress) options.progress(0, total);
+  std::vector<float> host(max_floats);
+
+  for (int t = 0; t < total; ++t) {
+    if (options.cancel && options.cancel->load()) throw Cancelled();
+    const Tile& tile = plan.tiles[static_cast<std::size_t>(t)];
+    // What the kernel is told and launched with: the tile itself, or the
+    // full tile size when uniform (the excess lands in ignored rows/lanes).
+    const int launch_w = options.uniform_launch ? plan.max_width : tile.width;
+    const int launch_h = options.uniform_launch ? plan.max_height : tile.height;
+    const int groups_x = ceil_div(launch_w, simd);
+    const int stride = groups_x * simd;
+    kernel.set_arg(kTileX0, static_cast<cl_int>(tile.x0));
+    kernel.set_arg(kTileY0, static_cast<cl_int>(tile.y0));
+    kernel.set_arg(kTileW, static_cast<cl_int>(launch_w));
+    kernel.set_arg(kTileH, static_cast<cl_int>(launch_h));
+    kernel.set_arg(kOutStride, static_cast<cl_int>(stride));
+
+    const std::size_t global[2] = {static_cast<std::size_t>(groups_x),
+                                   static_cast<std::size_t>(launch_h)};
+    cl_event raw_event = nullptr;
+    check_cl(clEnqueueNDRangeKernel(device_->queue(), kernel.get(), 2, nullptr, global, nullptr, 0,
+                                    nullptr, &raw_event),
+             fmt::format("clEnqueueNDRangeKernel({}, tile {}x{} at {},{})", kernel.name(),
+                         tile.width, tile.height, tile.x0, tile.y0));
+    EventHandle event(raw_event);
+    const std::size_t tile_floats =
+        planes * static_cast<std::size_t>(stride) * static_cast<std::size_t>(launch_h);
+    // Blocking read on an in-order queue also waits for the kernel.
+    check_cl(clEnqueueReadBuffer(device_->queue(), out, CL_TRUE, 0, tile_floats * sizeof(float),
+                                 host.data(), 0, nullptr, nullptr),
+             "clEnqueueReadBuffer(output tile)");
+    stats.kernel_ms += event_ms(event.get());
+
+    // Drop the padding lanes while copying rows into the image.
+    for (std::size_t k = 0; k < planes; ++k) {
+      auto dst = image.plane(static_cast<int>(k));
+      for (int row = 0; row < tile.height; ++row) {
+        const float* src =
+            host.data() + (k * static_cast<std::size_t>(launch_h) + static_cast<std::size_t>(row)) *
+                              static_cast<std::size_t>(stride);
+        float* to = dst.data() + static_cast<std::size_t>(tile.y0 + row) * static_cast<std::size_t>(width) +
+                    static_cast<std::size_t>(tile.x0);
+        std::memcpy(to, src, static_cast<std::size_t>(tile.width) * sizeof(float));
+      }
+    }
+    if (options.progress) options.progress(t + 1, total);
+  }
+
+  stats.tiles = total;
+  stats.total_ms = ms_between(start, std::chrono::steady_clock::now());
+  last_stats_ = stats;
+  if (stats_out) *stats_out = stats;
+  return image;
+}
+
+}  // namespace sdfrt

@@ -1,0 +1,75 @@
+//! fn ray_box
+//! deps: vec3_ops
+//! class: helper
+// Slab test: the interval [t0, t1] of the ray inside the box [lo, hi].
+// Returns the lanes whose ray meets the box in front of the camera.
+inline mask ray_box(vec3 ro, vec3 rd, vec3 lo, vec3 hi, real* t0, real* t1)
+{
+    // 1/rd with the sign kept for zero components, so slabs stay ordered.
+    vec3 inv = v3(1.0f / SEL(rd.x, copysign(K(1e-30f), rd.x), fabs(rd.x) < 1e-30f),
+                  1.0f / SEL(rd.y, copysign(K(1e-30f), rd.y), fabs(rd.y) < 1e-30f),
+                  1.0f / SEL(rd.z, copysign(K(1e-30f), rd.z), fabs(rd.z) < 1e-30f));
+    vec3 a = v3_mul(v3_sub(lo, ro), inv), b = v3_mul(v3_sub(hi, ro), inv);
+    real tn = fmax(fmax(fmin(a.x, b.x), fmin(a.y, b.y)), fmin(a.z, b.z));
+    real tf = fmin(fmin(fmax(a.x, b.x), fmax(a.y, b.y)), fmax(a.z, b.z));
+    *t0 = fmax(tn, K(0.0f));
+    *t1 = tf;
+    return (tf >= tn) & (tf > 0.0f);
+}
+
+//! fn march_sphere_trace
+//! deps: vec3_ops
+//! after-scene
+//! class: helper
+// Sphere tracing from t0 to t1. A lane hits when the distance drops below
+// hit_eps times the pixel footprint at t (t * pixel_angle), so precision
+// follows the pixel size instead of a fixed epsilon. Lanes that run out of
+// steps count as misses. `*steps` returns the steps each lane took.
+inline mask march_sphere_trace(vec3 ro, vec3 rd, real t0, real t1, mask active,
+                               real pixel_angle, real hit_eps, real step_factor,
+                               int max_steps, real* t_out, real* steps)
+{
+    real t = t0;
+    mask hit = active & !active;
+    real n = 0.0f;
+    for (int i = 0; i < max_steps && M_ANY(active); ++i) {
+        real d = scene_dist(v3_mad(ro, rd, t));
+        mask now_hit = active & (d < hit_eps * pixel_angle * fmax(t, K(1e-4f)));
+        hit = hit | now_hit;
+        active = active & !now_hit;
+        n = SEL(n, n + 1.0f, active | now_hit);
+        t = SEL(t, t + d * step_factor, active);
+        active = active & (t < t1);
+    }
+    *t_out = t;
+    *steps = n;
+    return hit;
+}
+
+//! fn normal_tetrahedral
+//! deps: vec3_ops
+//! after-scene
+//! class: helper
+// Four-tap tetrahedral gradient (seed 000 Eq. 5): the cheapest symmetric
+// finite difference. h follows the pixel footprint at the hit.
+inline vec3 normal_tetrahedral(vec3 p, real h)
+{
+    real a = scene_dist(v3(p.x + h, p.y - h, p.z - h));
+    real b = scene_dist(v3(p.x - h, p.y - h, p.z + h));
+    real c = scene_dist(v3(p.x - h, p.y + h, p.z - h));
+    real d = scene_dist(v3(p.x + h, p.y + h, p.z + h));
+    return v3_normalize(v3(a - b - c + d, -a - b + c + d, -a + b - c + d));
+}
+
+//! fn normal_central
+//! deps: vec3_ops
+//! after-scene
+//! class: helper
+// Six-tap central differences.
+inline vec3 normal_central(vec3 p, real h)
+{
+    real dx = scene_dist(v3(p.x + h, p.y, p.z)) - scene_dist(v3(p.x - h, p.y, p.z));
+    real dy = scene_dist(v3(p.x, p.y + h, p.z)) - scene_dist(v3(p.x, p.y - h, p.z));
+    real dz = scene_dist(v3(p.x, p.y, p.z + h)) - scene_dist(v3(p.x, p.y, p.z - h));
+    return v3_normalize(v3(dx, dy, dz));
+}

@@ -1,0 +1,81 @@
+// The kernel holds only what the scene needs, with static values as literals
+// and comments that lead back to the YAML.
+#include <gtest/gtest.h>
+
+#include "scene_text.hpp"
+#include "sdfc/codegen/emit_opencl.hpp"
+#include "sdfc/passes/passes.hpp"
+
+namespace sdfc {
+namespace {
+
+std::string kernel_of(const std::string& scene, int width = 1) {
+  return codegen::emit_opencl(passes::run_pipeline(test::lower_text(scene)), {width, false}).source;
+}
+
+bool has(const std::string& s, const std::string& what) { return s.find(what) != std::string::npos; }
+
+TEST(Specialisation, OnlyReachedStdlibFunctions) {
+  std::string k = kernel_of("scene: {sphere: {radius: 1.25}}\n");
+  EXPECT_TRUE(has(k, "inline real sd_sphere("));
+  for (const char* absent : {"sd_torus", "sd_box", "sd_capsule", "sd_cylinder", "sd_plane", "de_mandelbulb",
+                             "op_smooth_union", "normal_central"})
+    EXPECT_FALSE(has(k, absent)) << absent;
+  std::string t = kernel_of("scene: {torus: {major_radius: 1, minor_radius: 0.2}}\n");
+  EXPECT_TRUE(has(t, "inline real sd_torus("));
+  EXPECT_FALSE(has(t, "sd_sphere"));
+}
+
+TEST(Specialisation, DependenciesComeAlong) {
+  std::string k = kernel_of("scene: {smooth_difference: {radius: 0.2, children: [{sphere: {radius: 1}}, {box: {}}]}}\n");
+  EXPECT_TRUE(has(k, "inline real op_smooth_difference("));
+  EXPECT_TRUE(has(k, "inline real op_smooth_intersection("));  // smooth_difference calls it
+  EXPECT_LT(k.find("op_smooth_intersection("), k.find("op_smooth_difference("));
+}
+
+TEST(Specialisation, StaticValuesAreLiterals) {
+  std::string k = kernel_of("scene: {sphere: {radius: 1.25}, translate: [0.5, 0, -2]}\n");
+  EXPECT_TRUE(has(k, "sd_sphere(p0, 1.25f)")) << k;
+  EXPECT_TRUE(has(k, "v3(0.5f, 0.0f, -2.0f)")) << k;
+  std::string d = kernel_of("render: {precision: double}\nscene: {sphere: {radius: 0.1}}\n");
+  EXPECT_TRUE(has(d, "sd_sphere(p, 0.1)")) << d;  // double literals carry no f
+  EXPECT_TRUE(has(d, "cl_khr_fp64"));
+}
+
+TEST(Specialisation, CommentsCarryTheYamlLine) {
+  std::string k = kernel_of("scene:\n  union:\n    - sphere: {radius: 1}\n    - box: {size: [1, 1, 1]}\n");
+  EXPECT_TRUE(has(k, "// sphere radius=1  (t.yaml:3)")) << k;
+  EXPECT_TRUE(has(k, "(t.yaml:4)")) << k;
+}
+
+TEST(Specialisation, NoMaterialCodeWithoutMaterials) {
+  std::string k = kernel_of("scene:\n  union:\n    - sphere: {radius: 1}\n    - box: {size: [1, 1, 1]}\n");
+  EXPECT_FALSE(has(k, "mask is1")) << k;  // no per-material selects
+  std::string m = kernel_of("materials: {red: {color: [1, 0, 0]}}\nscene:\n  union:\n"
+                            "    - {sphere: {radius: 1}, material: red}\n    - box: {size: [1, 1, 1]}\n");
+  EXPECT_TRUE(has(m, "mask is1 = id == 1.0f;")) << m;
+}
+
+TEST(Specialisation, LightsAreUnrolledAndAmbientFolded) {
+  std::string k = kernel_of(
+      "lights:\n  - ambient: {color: [1, 1, 1], intensity: 0.25}\n  - ambient: {color: [1, 0, 0], intensity: 0.5}\n"
+      "scene: {sphere: {radius: 1}}\n");
+  EXPECT_TRUE(has(k, "v3(0.75f, 0.25f, 0.25f)")) << k;  // both ambients summed at compile time
+  EXPECT_FALSE(has(k, "shade_blinn_phong")) << k;       // no direct light, no Phong code
+}
+
+TEST(Specialisation, BoundedScenesMarchInsideTheirBounds) {
+  EXPECT_TRUE(has(kernel_of("scene: {sphere: {radius: 1}}\n"), "ray_box(ro, rd"));
+  EXPECT_FALSE(has(kernel_of("scene: {plane: {normal: [0, 0, 1]}}\n"), "ray_box(ro, rd"));
+}
+
+TEST(Specialisation, WidthSelectsThePacketTypes) {
+  std::string s = "scene: {sphere: {radius: 1}}\n";
+  EXPECT_TRUE(has(kernel_of(s, 1), "typedef float real;"));
+  EXPECT_TRUE(has(kernel_of(s, 16), "typedef float16 real;"));
+  EXPECT_TRUE(has(kernel_of(s, 16), "typedef int16 mask;"));
+  EXPECT_THROW(kernel_of(s, 3), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace sdfc

@@ -1,0 +1,50 @@
+#pragma once
+// Shared helpers of the runtime tests.
+#include <sdfrt/device.hpp>
+#include <sdfrt/renderer.hpp>
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace sdfrt::test {
+
+// A fresh directory under /tmp, removed with everything in it.
+class TempDir {
+ public:
+  TempDir();
+  ~TempDir();
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+  std::vector<std::string> file_names() const;  // sorted
+
+ private:
+  std::filesystem::path path_;
+};
+
+// Sets (or unsets, with nullopt) an environment variable for one scope.
+class ScopedEnv {
+ public:
+  ScopedEnv(std::string name, std::optional<std::string> value);
+  ~ScopedEnv();
+  ScopedEnv(const ScopedEnv&) = delete;
+  ScopedEnv& operator=(const ScopedEnv&) = delete;
+
+ private:
+  std::string name_;
+  std::optional<std::string> old_;
+};
+
+// The default device, opened once per test process.
+Device& test_device();
+
+// Writes r = x/img_w, g = y/img_h, b = frame[0], depth = x+y.
+// simd_width 1 (scalar) or 8 (float8 + vstore8).
+KernelSpec gradient_spec(int simd_width);
+float expected_gradient(int plane, int x, int y, int width, int height, float frame0);
+
+std::string read_file(const std::filesystem::path& path);
+
+}  // namespace sdfrt::test
