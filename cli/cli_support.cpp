@@ -42,6 +42,8 @@ void write_text_output(const std::string& path, const std::string& text) {
   }
 }
 
-int default_simd_width(bool device_is_cpu) { return device_is_cpu ? 8 : 1; }
+// 16 lanes fill AVX-512 and measured fastest on PoCL here (802 ms vs 1031 ms at 8
+// and 6341 ms per pixel for the 1280x720 Mandelbulb); GPUs want one pixel per work-item.
+int default_simd_width(bool device_is_cpu) { return device_is_cpu ? 16 : 1; }
 
 }  // namespace sdfc::cli

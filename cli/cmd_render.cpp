@@ -101,7 +101,7 @@ Action add_render(CLI::App& app) {
   cmd->add_option("--height", a->height, "Image height (overrides render.height)")->check(CLI::Range(1, 16384));
   cmd->add_option("--device", a->device, "Device id from 'sdfc devices' (P:D, an index or part of the name); "
                                          "default: $SDFC_DEVICE, else the first CPU device");
-  cmd->add_option("--simd-width", a->simd_width, "Pixels per work-item: 1 or 2/4/8/16 (default: 8 on CPUs, 1 on GPUs)")
+  cmd->add_option("--simd-width", a->simd_width, "Pixels per work-item: 1 or 2/4/8/16 (default: 16 on CPUs, 1 on GPUs)")
       ->check(CLI::IsMember({1, 2, 4, 8, 16}));
   cmd->add_option("--tile", a->tile, "Tile size in pixels (default 256)")->check(CLI::Range(16, 16384));
   cmd->add_option("--repeat", a->repeat, "Render one warm-up and N timed frames; print each time and the median")
