@@ -80,6 +80,7 @@ ir::Props infer(const ir::Graph& g, const ir::Node& n) {
       p.cost += 4;
       break;
     case Kind::Material: p = kid(0); p.cost += 1; break;
+    case Kind::Bounded: p = kid(0); p.cost += 16; break;  // the box test in front
     case Kind::Union:
     case Kind::Intersection:
     case Kind::Difference:
@@ -99,8 +100,10 @@ ir::Props infer(const ir::Graph& g, const ir::Node& n) {
         if (n.kind == Kind::Union || n.kind == Kind::SmoothUnion) p.bounds = p.bounds.united(c.bounds);
         if (n.kind == Kind::Intersection || n.kind == Kind::SmoothIntersection) p.bounds = p.bounds.intersected(c.bounds);
       }
-      // A smooth union adds at most radius/4 of material beyond its children.
-      if (n.kind == Kind::SmoothUnion && p.bounds.finite()) p.bounds = p.bounds.padded(q[0] * 0.25);
+      // Each fold of a smooth union subtracts at most radius/4, so n children
+      // reach at most (n - 1) * radius/4 beyond the union of their bounds.
+      if (n.kind == Kind::SmoothUnion && p.bounds.finite())
+        p.bounds = p.bounds.padded(double(n.children.size() - 1) * q[0] * 0.25);
       break;
     }
   }

@@ -11,6 +11,7 @@ const std::vector<PassInfo>& pipeline() {
       {"cse", cse},
       {"eliminate_dead", eliminate_dead},
       {"infer_properties", infer_properties},
+      {"insert_bounding_volumes", insert_bounding_volumes},
   };
   return list;
 }

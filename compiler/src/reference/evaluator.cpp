@@ -89,6 +89,16 @@ Sample evaluate(const ir::Graph& g, ir::NodeId id, const Vec3& p) {
       Sample s = evaluate(g, n.children[0], {p[0] / q[0], p[1] / q[0], p[2] / q[0]});
       return {s.distance * q[0], s.material};
     }
+    case Kind::Bounded: {
+      // The box's exact distance is a lower bound of the child's; far enough
+      // out it stands in for the child, which is then not evaluated.
+      double c[3], h[3];
+      for (int i = 0; i < 3; ++i) c[i] = 0.5 * (q[i] + q[i + 3]), h[i] = 0.5 * (q[i + 3] - q[i]);
+      double dx = std::fabs(p[0] - c[0]) - h[0], dy = std::fabs(p[1] - c[1]) - h[1], dz = std::fabs(p[2] - c[2]) - h[2];
+      double box = len(std::max(dx, 0.0), std::max(dy, 0.0), std::max(dz, 0.0)) + std::min(std::max({dx, dy, dz}), 0.0);
+      if (box > q[6]) return {box, 0};
+      return evaluate(g, n.children[0], p);
+    }
     case Kind::Material: {
       Sample s = evaluate(g, n.children[0], p);
       return {s.distance, s.material != 0 ? s.material : int(q[0])};
