@@ -24,8 +24,13 @@ struct PassInfo {
 };
 const std::vector<PassInfo>& pipeline();
 
-// Runs the pipeline; after each pass calls `after(name, module)` if given.
+// Runs the pipeline; after each pass calls `after(name, module)` if given
+// and, if `timings` is given, appends (pass name, milliseconds).
 using PassObserver = std::function<void(std::string_view, const ir::Module&)>;
-ir::Module run_pipeline(ir::Module m, const PassObserver& after = {});
+struct PassTiming {
+  std::string_view pass;
+  double ms;
+};
+ir::Module run_pipeline(ir::Module m, const PassObserver& after = {}, std::vector<PassTiming>* timings = nullptr);
 
 }  // namespace sdfc::passes
