@@ -111,7 +111,7 @@ inline real de_sierpinski(vec3 p, int iterations, real scale)
         z = v3_sub(v3_scale(z, scale), v3_splat(scale - 1.0f));
         s = s * scale;
     }
-    real tetra = (fmax(fabs(z.x + z.y) - z.z, fabs(z.x - z.y) + z.z) - 1.0f) * 0.57735026918962576f;
+    real tetra = (fmax(fabs(z.x + z.y) - z.z, fabs(z.x - z.y) + z.z) - 1.0f) * rsqrt(K(3.0f));
     return tetra / s;
 }
 
@@ -139,15 +139,17 @@ inline vec3 v3_rows(vec3 a, vec3 r0, vec3 r1, vec3 r2) { return v3(v3_dot(r0, a)
 // (rows b0..b2), fold into the fundamental domain of the symmetry group
 // (0 tetrahedral, 1 octahedral, 2 icosahedral, 3 Menger = octahedral plus
 // the middle-layer fold), scale about `offset`, rotate (rows a0..a2). The
-// distance is |z| / scale^n: the distance to the IFS's point set, which the
-// iterations make dense.
+// attractor lies in the ball of radius |offset|, so after n iterations the
+// balls of radius |offset| / scale^n around the orbit's copies cover it:
+// d = (|z| - |offset|) / scale^n, which converges to the attractor as n grows.
 inline real de_kifs(vec3 p, int symmetry, real scale, vec3 offset, int iterations,
                     vec3 b0, vec3 b1, vec3 b2, vec3 a0, vec3 a1, vec3 a2)
 {
     // Mirror normals of the icosahedral group (golden ratio g): (-g, g-1, 1)
-    // and (1, -g, g+1), normalised.
-    const vec3 n1 = v3(-0.80901699437494742f, 0.30901699437494742f, 0.5f);
-    const vec3 n2 = v3(0.30901699437494742f, -0.5f, 0.80901699437494742f);
+    // and (1, -g, g+1), normalised; computed in the kernel's precision.
+    const scalar g = (K(1.0f) + sqrt(K(5.0f))) * K(0.5f);
+    const vec3 n1 = v3_normalize(v3(-g, g - K(1.0f), K(1.0f)));
+    const vec3 n2 = v3_normalize(v3(K(1.0f), -g, g + K(1.0f)));
     vec3 z = p;
     real s = 1.0f;
     for (int i = 0; i < iterations; ++i) {
@@ -177,7 +179,7 @@ inline real de_kifs(vec3 p, int symmetry, real scale, vec3 offset, int iteration
         z = v3_rows(z, a0, a1, a2);
         s = s * scale;
     }
-    return v3_length(z) / s;
+    return (v3_length(z) - v3_length(offset)) / s;
 }
 
 //! fn hybrid_bulb_step

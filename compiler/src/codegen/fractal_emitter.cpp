@@ -60,9 +60,10 @@ std::string hybrid(const ir::Node& n, const std::string& p, const Literals& lit,
     w.line(fmt::format("{} = 0.5f * log(fmax(r, K(1e-20f))) * r / dr;  // with a Mandelbulb step: the log estimator", d));
   else
     w.line(fmt::format("{} = r / fabs(dr);  // folds only: the linear estimator", d));
-  w.line("// outside the bailout ball the orbit is already escaped: the distance to the ball is a true bound");
+  w.line("// far field: the set lies inside the bailout ball, so beyond twice its radius the distance to");
+  w.line("// the ball is a true bound (the log estimator overshoots there) and still far from zero");
   w.line(fmt::format("real r0 = v3_length({});", p));
-  w.line(fmt::format("{0} = SEL({0}, r0 - {1}, r0 > {1});", d, lit.real(q[1])));
+  w.line(fmt::format("{0} = SEL({0}, r0 - {1}, r0 > {2});", d, lit.real(q[1]), lit.real(2 * q[1])));
   w.close("}");
   return d;
 }

@@ -91,9 +91,10 @@ ir::Props infer(const ir::Graph& g, const ir::Node& n) {
       break;
     case Kind::Kifs: {
       // Every map of the IFS moves points beyond |offset| further out, so the
-      // attractor lies in the ball of radius |offset|.
+      // attractor lies in the ball of radius |offset|; the estimator's cover
+      // by balls adds |offset| / scale^n.
       double o = std::sqrt(q[2] * q[2] + q[3] * q[3] + q[4] * q[4]);
-      p.bounds = Box3::cube(1.02 * o + 1e-3);
+      p.bounds = Box3::cube(o * (1 + std::pow(q[1], -q[5])) * 1.02 + 1e-3);
       p.cls = DistanceClass::Estimate;
       p.cost = 10 + q[5] * (q[0] == 2 ? 70 : 40);
       break;

@@ -182,7 +182,8 @@ double kifs(const Vec3& p, const std::vector<double>& q) {
     z = apply(q, 15, z);
     s *= scale;
   }
-  return len(z) / s;
+  // The level-n cover of the attractor (inside |offset|) by balls.
+  return (len(z) - len(offset)) / s;
 }
 
 double hybrid(const Vec3& p, const std::vector<double>& q) {
@@ -212,7 +213,7 @@ double hybrid(const Vec3& p, const std::vector<double>& q) {
     r = len(z);
   }
   double r0 = len(p);
-  if (r0 > bailout) return r0 - bailout;
+  if (r0 > 2 * bailout) return r0 - bailout;  // the set lies inside the bailout ball
   return any_bulb ? 0.5 * std::log(std::max(r, 1e-20)) * r / dr : r / std::fabs(dr);
 }
 
