@@ -104,7 +104,7 @@ TEST(Cli, CompileShowsEveryStage) {
     EXPECT_NE(all.out.find(std::string("// ---- IR after ") + pass + " "), std::string::npos) << pass;
   Result cl = sdfc("compile examples/mandelbulb.yaml --emit cl --simd-width 1");
   EXPECT_NE(cl.out.find("__kernel void sdfc_render("), std::string::npos);
-  EXPECT_NE(cl.out.find("de_mandelbulb(p"), std::string::npos);
+  EXPECT_NE(cl.out.find("de_mandelbulb_int(p"), std::string::npos);
 }
 
 TEST(Cli, CompileWritesAFile) {

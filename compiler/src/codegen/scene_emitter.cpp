@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "sdfc/ir/fractal_math.hpp"
+#include "fractal_emitter.hpp"
 
 namespace sdfc::codegen::detail {
 
@@ -79,9 +79,6 @@ class SceneEmitter {
       case Kind::Capsule:
         return leaf(n, fmt::format("{}({}, {}, {}, {})", call("sd_capsule"), p, lit_.vec3({q[0], q[1], q[2]}),
                                    lit_.vec3({q[3], q[4], q[5]}), r(6)));
-      case Kind::Mandelbulb:
-        return leaf(n, fmt::format("{}({}, {}, {}, {}, {})", call("de_mandelbulb"), p, r(0), int(q[1]), r(2),
-                                   lit_.real(ir::mandelbulb_set_radius(q[0]))));
       case Kind::Translate: {
         std::string p2 = var("p");
         w_.line(fmt::format("vec3 {} = v3_sub({}, {});  // {}", p2, p, lit_.vec3({q[0], q[1], q[2]}), describe(n)));
@@ -130,7 +127,12 @@ class SceneEmitter {
         w_.line(fmt::format("real {} = SEL({}, {}, {} != 0.0f);  // {}", m, id, c.mat, c.mat, describe(n)));
         return {c.d, m};
       }
-      default: return combine(n, p);
+      default:
+        if (is_fractal(n)) {
+          std::string expr = emit_fractal(n, p, lit_, w_, used_);
+          return leaf(n, expr);
+        }
+        return combine(n, p);
     }
   }
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <vector>
 
+#include "fractals.hpp"
 #include "sdfc/ir/fractal_math.hpp"
 
 namespace sdfc::reference {
@@ -78,6 +79,13 @@ Sample evaluate(const ir::Graph& g, ir::NodeId id, const Vec3& p) {
       return {len(pa[0] - ba[0] * h, pa[1] - ba[1] * h, pa[2] - ba[2] * h) - q[6], 0};
     }
     case Kind::Mandelbulb: return {mandelbulb(p, q[0], int(q[1]), q[2]), 0};
+    case Kind::Juliabulb: return {fractals::juliabulb(p, q), 0};
+    case Kind::Mandelbox: return {fractals::mandelbox(p, q), 0};
+    case Kind::QuaternionJulia: return {fractals::quaternion_julia(p, q), 0};
+    case Kind::Menger: return {fractals::menger(p, q), 0};
+    case Kind::Sierpinski: return {fractals::sierpinski(p, q), 0};
+    case Kind::Kifs: return {fractals::kifs(p, q), 0};
+    case Kind::Hybrid: return {fractals::hybrid(p, q), 0};
     case Kind::Translate: return evaluate(g, n.children[0], {p[0] - q[0], p[1] - q[1], p[2] - q[2]});
     case Kind::Rotate: {
       // Stored local->world; apply the transpose to go world->local.
