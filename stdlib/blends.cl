@@ -24,7 +24,7 @@ inline real op_blend_exponential(real a, real b, real k)
 // constant reaches sqrt(2) where the two gradients agree.
 inline real op_blend_chamfer(real a, real b, real r)
 {
-    return fmin(fmin(a, b), (a - r + b) * 0.70710678f);
+    return fmin(fmin(a, b), (a - r + b) * sqrt(K(0.5f)));
 }
 
 //! fn op_blend_round
@@ -41,9 +41,9 @@ inline real op_blend_round(real a, real b, real r)
 // hg_sdf fOpUnionColumns: n round columns along the seam (L <= sqrt(2)).
 inline real op_blend_columns(real a, real b, real r, real n)
 {
-    real column = r * 1.41421356f / ((n - 1.0f) * 2.0f + 1.41421356f);
-    real px = (a + b) * 0.70710678f, py = (b - a) * 0.70710678f;
-    px += -0.70710678f * r + column * 1.41421356f;
+    real column = r * sqrt(K(2.0f)) / ((n - 1.0f) * 2.0f + sqrt(K(2.0f)));
+    real px = (a + b) * sqrt(K(0.5f)), py = (b - a) * sqrt(K(0.5f));
+    px += -sqrt(K(0.5f)) * r + column * sqrt(K(2.0f));
     py += SEL((real)0.0f, column, fmod(n, K(2.0f)) == 1.0f);
     real size = 2.0f * column;
     py = py + 0.5f * size;

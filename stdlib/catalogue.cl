@@ -101,7 +101,7 @@ inline real sd_octahedron(vec3 p, real s)
     real qz = SEL(SEL(p.y, p.x, my), p.z, mx);
     real k = fmin(fmax(0.5f * (qz - qy + s), K(0.0f)), s);
     real dq = v3_length(v3(qx, qy - s + k, qz - k));
-    return SEL(m * 0.57735027f, dq, mx | my | mz);
+    return SEL(m * rsqrt(K(3.0f)), dq, mx | my | mz);
 }
 
 //! fn sd_hex_prism
@@ -111,7 +111,8 @@ inline real sd_octahedron(vec3 p, real s)
 // side face, half_height the half length along z.
 inline real sd_hex_prism(vec3 p, real apothem, real half_height)
 {
-    real kx = -0.8660254f, ky = 0.5f, kz = 0.57735027f;
+    // Constants from sqrt so double kernels keep full precision.
+    real kx = -0.5f * sqrt(K(3.0f)), ky = 0.5f, kz = rsqrt(K(3.0f));
     p = v3_abs(p);
     real f = 2.0f * fmin(kx * p.x + ky * p.y, K(0.0f));
     real x = p.x - f * kx, y = p.y - f * ky;
@@ -129,7 +130,7 @@ inline real sd_hex_prism(vec3 p, real apothem, real half_height)
 // (0, 2r/sqrt3), |z| <= half_height. Exact: the exact 2D triangle extruded.
 inline real sd_tri_prism(vec3 p, real r, real half_height)
 {
-    real k = 1.7320508f;
+    real k = sqrt(K(3.0f));
     real x = fabs(p.x) - r, y = p.y + r / k;
     mask fold = x + k * y > 0.0f;
     real fx = 0.5f * (x - k * y), fy = 0.5f * (-k * x - y);
@@ -194,7 +195,7 @@ inline real sd_pyramid(vec3 p, real base, real height)
 //! class: exact
 // A triangle a, b, c thickened to a slab of half thickness `half`: the
 // exact unsigned distance to the triangle minus half.
-inline real sd_triangle(vec3 p, vec3 a, vec3 b, vec3 c, real half)
+inline real sd_triangle(vec3 p, vec3 a, vec3 b, vec3 c, real thick)
 {
     vec3 ba = v3_sub(b, a), pa = v3_sub(p, a);
     vec3 cb = v3_sub(c, b), pb = v3_sub(p, b);
@@ -205,14 +206,14 @@ inline real sd_triangle(vec3 p, vec3 a, vec3 b, vec3 c, real half)
     real edge = fmin(fmin(cat_seg2(ba, pa), cat_seg2(cb, pb)), cat_seg2(ac, pc));
     real np = v3_dot(nor, pa);
     real face = np * np / cat_dot2(nor);
-    return sqrt(SEL(face, edge, sides < 2.0f)) - half;
+    return sqrt(SEL(face, edge, sides < 2.0f)) - thick;
 }
 
 //! fn sd_quad
 //! deps: cat_vec_helpers
 //! class: exact
 // A planar convex quad a, b, c, d thickened to half thickness `half`.
-inline real sd_quad(vec3 p, vec3 a, vec3 b, vec3 c, vec3 d, real half)
+inline real sd_quad(vec3 p, vec3 a, vec3 b, vec3 c, vec3 d, real thick)
 {
     vec3 ba = v3_sub(b, a), pa = v3_sub(p, a);
     vec3 cb = v3_sub(c, b), pb = v3_sub(p, b);
@@ -224,7 +225,7 @@ inline real sd_quad(vec3 p, vec3 a, vec3 b, vec3 c, vec3 d, real half)
     real edge = fmin(fmin(cat_seg2(ba, pa), cat_seg2(cb, pb)), fmin(cat_seg2(dc, pc), cat_seg2(ad, pd)));
     real np = v3_dot(nor, pa);
     real face = np * np / cat_dot2(nor);
-    return sqrt(SEL(face, edge, sides < 3.0f)) - half;
+    return sqrt(SEL(face, edge, sides < 3.0f)) - thick;
 }
 
 //! fn sd_box_frame

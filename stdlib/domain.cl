@@ -27,15 +27,15 @@ inline real dm_box_outside(vec3 p, vec3 lo, vec3 hi)
 // (for a finite row at its end, the one inside the row).
 inline real dm_repeat_axis(real x, real s, real n, real* near)
 {
-    real half = 0.5f * (n - 1.0f);
-    real i = round(x / s + half);
+    real mid = SEL((real)0.0f, 0.5f * (n - 1.0f), n > 0.0f);  // endless rows are centred on a cell
+    real i = round(x / s + mid);
     i = SEL(i, fmin(fmax(i, K(0.0f)), n - 1.0f), n > 0.0f);
-    real u = x - s * (i - half);
+    real u = x - s * (i - mid);
     real side = SEL((real)1.0f, (real)-1.0f, u < 0.0f);
     mask outside = (n > 0.0f) & ((i + side < 0.0f) | (i + side > n - 1.0f));
     side = SEL(side, -side, outside);
     side = SEL(side, (real)0.0f, n == 1.0f);
-    *near = x - s * (i + side - half);
+    *near = x - s * (i + side - mid);
     return u;
 }
 
@@ -74,7 +74,7 @@ inline vec3 dm_bend(vec3 p, int axis, real rate)
 inline vec3 dm_polar(vec3 p, int axis, real count, vec3* near)
 {
     vec3 q = dm_to_z(p, axis);
-    real sector = 6.28318530718f / count;
+    real sector = 2.0f * acos(K(-1.0f)) / count;  // 2 pi in the kernel's precision
     real a = atan2(q.y, q.x);
     real i = round(a / sector);
     real u = a - i * sector;

@@ -288,7 +288,7 @@ class SceneEmitter {
       near[i] = own[i];
       if (q[3 + i] == 1) continue;
       axes.push_back(i);
-      own[i] = var("u"), near[i] = var("v");
+      own[i] = var("u"), near[i] = var("nb");
       w_.line(fmt::format("real {};", near[i]));
       w_.line(fmt::format("real {} = {}({}.{}, {}, {}, &{});", own[i], call("dm_repeat_axis"), p, xyz[i],
                           lit_.typed(q[i]), lit_.typed(q[3 + i]), near[i]));

@@ -58,16 +58,17 @@ std::optional<ir::Props> domain_props(const ir::Graph& g, const ir::Node& n,
   switch (n.kind) {
     case Kind::Repeat: {
       p = kid(0);
+      need_bounds(n, p.bounds, "repeat");
+      const Box3 cell = p.bounds;
       int repeated = 0;
       for (int i = 0; i < 3; ++i) {
         if (q[3 + i] == 1) continue;
         ++repeated;
         const char* axis = i == 0 ? "x" : i == 1 ? "y" : "z";
-        need_bounds(n, p.bounds, "repeat");
         // The neighbour cell is evaluated, so the child may reach into it, not past it.
-        if (reach(p.bounds, i) >= q[i])
+        if (reach(cell, i) >= q[i])
           fail(n.loc, fmt::format("repeat: along {} the shape reaches {:.4g} from its cell centre, not less than the "
-                                  "period {:.4g}", axis, reach(p.bounds, i), q[i]),
+                                  "period {:.4g}", axis, reach(cell, i), q[i]),
                "make the period larger than the shape's half width along that axis");
         if (q[3 + i] == 0) {
           p.bounds.lo[i] = -Box3::inf(), p.bounds.hi[i] = Box3::inf();
