@@ -39,6 +39,10 @@ inline real op_blend_round(real a, real b, real r)
 //! fn op_blend_columns
 //! class: bound
 // hg_sdf fOpUnionColumns: n round columns along the seam (L <= sqrt(2)).
+// hg_sdf switches the columns on where a < r and b < r, which leaves a jump
+// in the field at that border (the march can skip a column's edge); here
+// the columns are cut by that region with a max instead, so the field is
+// continuous and the surface the same.
 inline real op_blend_columns(real a, real b, real r, real n)
 {
     real column = r * sqrt(K(2.0f)) / ((n - 1.0f) * 2.0f + sqrt(K(2.0f)));
@@ -48,8 +52,8 @@ inline real op_blend_columns(real a, real b, real r, real n)
     real size = 2.0f * column;
     py = py + 0.5f * size;
     py = py - size * floor(py / size) - 0.5f * size;
-    real res = fmin(fmin(sqrt(px * px + py * py) - column, px), fmin(a, b));
-    return SEL(fmin(a, b), res, (a < r) & (b < r));
+    real cols = fmin(sqrt(px * px + py * py) - column, px);
+    return fmin(fmin(a, b), fmax(cols, fmax(a, b) - r));
 }
 
 //! fn op_blend_stairs

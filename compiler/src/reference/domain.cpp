@@ -39,14 +39,15 @@ double blend_union(int style, double a, double b, double r, double n) {
     case 2: return std::min(std::min(a, b), (a - r + b) * std::sqrt(0.5));
     case 3: return std::max(r, std::min(a, b)) - std::hypot(std::max(r - a, 0.0), std::max(r - b, 0.0));
     case 4: {
-      if (!(a < r && b < r)) return std::min(a, b);
       double col = r * std::sqrt(2.0) / ((n - 1) * 2 + std::sqrt(2.0));
       double x = (a + b) * std::sqrt(0.5), y = (b - a) * std::sqrt(0.5);
       x += -std::sqrt(0.5) * r + col * std::sqrt(2.0);
       if (std::fmod(n, 2.0) == 1) y += col;
       double size = 2 * col;
       y = y + size / 2 - size * std::floor((y + size / 2) / size) - size / 2;
-      return std::min({std::hypot(x, y) - col, x, a, b});
+      // The columns, cut to the region a < r, b < r (continuously, see blends.cl).
+      double cols = std::min(std::hypot(x, y) - col, x);
+      return std::min({a, b, std::max(cols, std::max(a, b) - r)});
     }
     case 5: {
       double s = r / n, u = b - r;
