@@ -79,7 +79,8 @@ ir::Module compile(const std::string& geometry, bool correct) {
 
 struct MarchStats {
   int rays_with_surface = 0;
-  int skipped = 0;  // the sphere tracer passed (or never reached) the first surface
+  int skipped = 0;     // the sphere tracer passed (or never reached) the first surface
+  int false_hits = 0;  // it stopped where there is no surface
 };
 
 // Rays from a sphere around the bounds towards random points inside them.
@@ -119,6 +120,7 @@ MarchStats march(const ir::Module& traced, const ir::Module& truth, int rays) {
       }
       t += dist;
     }
+    if (hit && std::fabs(reference::distance(truth, at(t))) > 1e-3) ++s.false_hits;
     if (!hit || t > first + h) {
       ++s.skipped;
       if (std::getenv("SDFC_DEBUG_RAYS"))
@@ -136,6 +138,7 @@ TEST_P(LowerBound, SphereTracingNeverPassesTheFirstSurface) {
   MarchStats s = march(corrected, raw, 300);
   EXPECT_GT(s.rays_with_surface, 60) << sc.name;
   EXPECT_EQ(s.skipped, 0) << sc.name << ": " << s.skipped << " of " << s.rays_with_surface << " rays passed the surface";
+  EXPECT_EQ(s.false_hits, 0) << sc.name << ": rays stopped away from the surface";
   // Where L <= 1 the correction changes nothing, and the raw field must hold too.
   if (raw.graph->node(raw.root).props.lipschitz <= 1 + 1e-9) {
     MarchStats r = march(raw, raw, 300);

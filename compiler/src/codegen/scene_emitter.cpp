@@ -82,13 +82,16 @@ class SceneEmitter {
       w_.line(fmt::format("real {} = {};  // L = {:.4g} > 1: divide by L", d, scaled, n.props.lipschitz));
       return {d, v.mat};
     }
-    // L holds inside the region only; outside it the distance to the region's
-    // box is the bound (the surface lies inside).
-    std::string b = var("b");
+    // L holds inside the region only; outside it the distance to the node's
+    // bounds is the bound (the surface lies inside them, at least the
+    // region's margin away).
+    std::string b = var("b"), o = var("o");
     call("dm_axis_helpers");
-    w_.line(fmt::format("real {} = dm_box_outside({}, {}, {});  // L = {:.4g} > 1 inside this box", b, p,
+    w_.line(fmt::format("real {} = dm_box_outside({}, {}, {});  // L = {:.4g} > 1 inside this box", o, p,
                         lit_.vec3(r.lo), lit_.vec3(r.hi), n.props.lipschitz));
-    w_.line(fmt::format("real {} = SEL({}, {}, {} > 0.0f);  // divide by L inside, box distance outside", d, scaled, b, b));
+    w_.line(fmt::format("real {} = dm_box_outside({}, {}, {});  // the node's bounds", b, p,
+                        lit_.vec3(n.props.bounds.lo), lit_.vec3(n.props.bounds.hi)));
+    w_.line(fmt::format("real {} = SEL({}, {}, {} > 0.0f);  // divide by L inside, bounds distance outside", d, scaled, b, o));
     return {d, v.mat};
   }
 

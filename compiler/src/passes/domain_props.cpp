@@ -49,6 +49,17 @@ double twist_lipschitz(double rate, double rho) {
   return h + std::sqrt(1 + h * h);
 }
 
+// Where a steep node's L must hold: its bounds B grown by a margin. Outside
+// that region the kernel uses the distance to B, which is at least the
+// margin there, so a ray never stops at the region's wall; inside it, the
+// segment to the nearest surface point stays in the (convex) region, where
+// L holds.
+Box3 steep_region(const Box3& b) {
+  double size = 0;
+  for (int i = 0; i < 3; ++i) size = std::max(size, b.hi[i] - b.lo[i]);
+  return b.padded(0.05 * size + 0.01);
+}
+
 }  // namespace
 
 std::optional<ir::Props> domain_props(const ir::Graph& g, const ir::Node& n,
@@ -114,20 +125,13 @@ std::optional<ir::Props> domain_props(const ir::Graph& g, const ir::Node& n,
       p = kid(0);
       int axis = int(q[0]);
       need_bounds(n, p.bounds, ir::info(n.kind).name);
-      if (n.kind == Kind::Twist) {
-        // Turning about the axis keeps the distance from it.
-        double rho = radial(p.bounds, axis);
-        p.bounds = around_axis(p.bounds, axis, rho);
-        p.lipschitz *= twist_lipschitz(q[1], rho * std::sqrt(2.0));  // farthest point of the region box
-      } else {
-        // The bend turns the (axis, next) plane about the origin: it keeps the
-        // distance from the third axis.
-        int third = (axis + 2) % 3;
-        double rho = radial(p.bounds, third);
-        p.bounds = around_axis(p.bounds, third, rho);
-        p.lipschitz *= 1 + std::fabs(q[1]) * rho * std::sqrt(2.0);
-      }
-      p.lipschitz_region = p.bounds;
+      // Twist turns about the axis, bend turns the (axis, next) plane about
+      // the third axis: both keep the distance from that axis.
+      int keep = n.kind == Kind::Twist ? axis : (axis + 2) % 3;
+      p.bounds = around_axis(p.bounds, keep, radial(p.bounds, keep));
+      p.lipschitz_region = steep_region(p.bounds);
+      double rho = radial(p.lipschitz_region, keep);  // the region's farthest point from that axis
+      p.lipschitz *= n.kind == Kind::Twist ? twist_lipschitz(q[1], rho) : 1 + std::fabs(q[1]) * rho;
       p.cls = p.lipschitz > 1 ? DistanceClass::Lipschitz : worse(p.cls, DistanceClass::Bound);
       p.cost += 30;
       break;
@@ -174,16 +178,16 @@ std::optional<ir::Props> domain_props(const ir::Graph& g, const ir::Node& n,
         fail(n.loc, "displace: the displacement grows with the distance from the shape, so it cannot be bounded",
              "use a bounded displacement, e.g. 0.05*sin(10*x)");
       p.bounds = inner.padded(m);
+      p.lipschitz_region = steep_region(p.bounds);
       double grad2 = 0;
       for (const char* v : {"x", "y", "z"}) {
-        double d = expr::evaluate_interval(expr::derivative(e, v), over(p.bounds)).magnitude();
+        double d = expr::evaluate_interval(expr::derivative(e, v), over(p.lipschitz_region)).magnitude();
         grad2 += d * d;
       }
       double grad = std::sqrt(grad2);
       if (!std::isfinite(grad))
         fail(n.loc, "displace: the displacement's gradient is unbounded over the shape", "avoid division by zero and log near 0");
       p.lipschitz += grad;
-      p.lipschitz_region = p.bounds;
       p.cls = p.lipschitz > 1 ? DistanceClass::Lipschitz : worse(p.cls, DistanceClass::Bound);
       p.cost += 20;
       break;

@@ -64,15 +64,14 @@ Sample evaluate_node(const ir::Graph& g, ir::NodeId id, const Vec3& p);
 }  // namespace
 
 // The node's distance with the correction the emitter applies where L > 1:
-// divided by L inside the region where L holds, the box distance outside.
+// divided by L inside the region where L holds, outside it the distance to
+// the node's bounds.
 Sample evaluate(const ir::Graph& g, ir::NodeId id, const Vec3& p) {
   Sample s = evaluate_node(g, id, p);
   const ir::Props& pr = g.node(id).props;
   if (!pr.corrected) return s;
-  if (pr.lipschitz_region.finite()) {
-    double b = box_outside(p, pr.lipschitz_region);
-    if (b > 0) return {b, s.material};
-  }
+  if (pr.lipschitz_region.finite() && box_outside(p, pr.lipschitz_region) > 0)
+    return {box_outside(p, pr.bounds), s.material};
   return {s.distance / pr.lipschitz, s.material};
 }
 
