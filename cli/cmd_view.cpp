@@ -2,6 +2,7 @@
 // kernel, flies the camera, recompiles when the file is saved.
 #include <fmt/format.h>
 
+#include <cstdlib>
 #include <iostream>
 #include <sdfrt/device.hpp>
 #include <sdfrt/errors.hpp>
@@ -21,6 +22,7 @@ struct ViewArgs {
   int simd_width = 0;
   int samples = 16;
   double benchmark = 0;
+  double orbit_degrees = 360;
   std::string screenshot_dir = ".";
 };
 
@@ -46,9 +48,15 @@ int run_view(const ViewArgs& a) {
   } catch (const std::runtime_error& e) {
     throw sdfrt::DeviceError(e.what());
   }
+  // Without a display SDL falls back to a driver nobody sees: fine for a
+  // benchmark or when asked for by name, a silent hang otherwise.
+  if (window->invisible() && a.benchmark <= 0 && !std::getenv("SDL_VIDEODRIVER"))
+    throw sdfrt::DeviceError(fmt::format("no display for the window (SDL picked the '{}' driver); run under X11 or "
+                                         "Wayland, or xvfb-run, or use --benchmark",
+                                         window->driver()));
   viewer::Viewer v(scene, *window, vo);
   if (a.benchmark > 0) {
-    viewer::FrameStats st = v.benchmark(a.benchmark);
+    viewer::FrameStats st = v.benchmark(a.benchmark, a.orbit_degrees);
     std::cout << viewer::format_frame_stats(st, vo.width, vo.height, device.info().device_name);
     return kOk;
   }
@@ -76,6 +84,9 @@ Action add_view(CLI::App& app) {
   cmd->add_option("--benchmark", a->benchmark,
                   "Orbit the target for SECONDS at full resolution, print frame-time statistics and exit")
       ->check(CLI::Range(0.1, 3600.0));
+  cmd->add_option("--orbit-degrees", a->orbit_degrees,
+                  "How far the benchmark orbit turns in its SECONDS (default 360; 0 = camera still)")
+      ->check(CLI::Range(-36000.0, 36000.0));
   return [a] { return run_view(*a); };
 }
 

@@ -150,8 +150,51 @@ TEST(Viewer, ScreenshotFromThePKeyMatchesAnOfflineRender) {
             << "/255\n";
   EXPECT_GT(lit, int(ref.size() / 2));  // a real picture, not a black frame
 
+  // C prints the camera as a scene line; F1 turns the stats on.
+  ::testing::internal::CaptureStdout();
+  press(SDLK_c);
+  ASSERT_TRUE(v.step());
+  std::string printed = ::testing::internal::GetCapturedStdout();
+  EXPECT_EQ(printed.rfind("camera: {position: [", 0), 0u) << printed;
+  press(SDLK_F1);
+  ASSERT_TRUE(v.step());
+  EXPECT_TRUE(v.overlay());
+  EXPECT_NE(window.title().find("fps"), std::string::npos) << window.title();
+
   press(SDLK_ESCAPE);
   EXPECT_FALSE(v.step());
+}
+
+TEST(Viewer, MouseLookRendersSmallThenRefinesToFullResolution) {
+  const std::string scene_path = std::string(SDFC_SOURCE_DIR) + "/examples/primitives.yaml";
+  SceneSession scene(device(), {scene_path, {}, 16});
+  ViewerOptions opt;
+  opt.width = 192;
+  opt.height = 96;
+  opt.max_samples = 1;
+  opt.frame_budget_ms = 1e-6;  // no frame fits: the smallest scale, 1/8
+  SdlWindow window("sdfc view test", opt.width, opt.height);
+  Viewer v(scene, window, opt);
+  ASSERT_TRUE(v.step());  // calibrates the cost per pixel
+  const ir::Camera before = v.rig().camera();
+
+  SDL_Event e{};
+  e.type = SDL_MOUSEMOTION;
+  e.motion.state = SDL_BUTTON_LMASK;
+  e.motion.xrel = 40;
+  e.motion.yrel = -10;
+  ASSERT_EQ(SDL_PushEvent(&e), 1);
+  ASSERT_TRUE(v.step());
+  EXPECT_NE(v.rig().camera().target, before.target);
+  EXPECT_EQ(v.rig().camera().position, before.position);  // looking turns, it does not move
+  EXPECT_EQ(v.last_frame().divisor, 8);
+  EXPECT_EQ(v.last_frame().width, opt.width / 8);
+  EXPECT_EQ(v.last_frame().samples, 0);
+
+  ASSERT_TRUE(v.step());  // still again: full resolution
+  EXPECT_EQ(v.last_frame().divisor, 1);
+  EXPECT_EQ(v.last_frame().width, opt.width);
+  EXPECT_EQ(v.last_frame().samples, 1);
 }
 
 TEST(Viewer, SavingTheSceneSwapsTheKernelAndKeepsTheCamera) {

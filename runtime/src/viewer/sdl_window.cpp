@@ -1,5 +1,7 @@
 #include "viewer/sdl_window.hpp"
 
+#include "viewer/overlay_text.hpp"
+
 #include <SDL.h>
 
 #include <stdexcept>
@@ -36,7 +38,7 @@ SdlWindow::~SdlWindow() {
   SDL_QuitSubSystem(SDL_INIT_VIDEO);
 }
 
-void SdlWindow::show(const std::uint8_t* rgb, int w, int h) {
+void SdlWindow::show(const std::uint8_t* rgb, int w, int h, const std::vector<std::string>& overlay) {
   if (!texture_ || w != tex_w_ || h != tex_h_) {
     if (texture_) SDL_DestroyTexture(texture_);
     texture_ = SDL_CreateTexture(renderer_, SDL_PIXELFORMAT_RGB24, SDL_TEXTUREACCESS_STREAMING, w, h);
@@ -47,7 +49,18 @@ void SdlWindow::show(const std::uint8_t* rgb, int w, int h) {
   SDL_UpdateTexture(texture_, nullptr, rgb, w * 3);
   SDL_RenderClear(renderer_);
   SDL_RenderCopy(renderer_, texture_, nullptr, nullptr);
+  draw_overlay(renderer_, overlay);
   SDL_RenderPresent(renderer_);
+}
+
+std::string SdlWindow::driver() const {
+  const char* d = SDL_GetCurrentVideoDriver();
+  return d ? d : "";
+}
+
+bool SdlWindow::invisible() const {
+  std::string d = driver();
+  return d == "offscreen" || d == "dummy" || d == "evdev";
 }
 
 void SdlWindow::set_title(const std::string& title) {

@@ -3,6 +3,7 @@
 // window, and owns SDL's video subsystem for its lifetime.
 #include <cstdint>
 #include <string>
+#include <vector>
 
 struct SDL_Window;
 struct SDL_Renderer;
@@ -19,10 +20,14 @@ class SdlWindow {
   SdlWindow& operator=(const SdlWindow&) = delete;
 
   // Uploads `rgb` (w*h*3 bytes, rows top to bottom) and presents it scaled
-  // to the whole window.
-  void show(const std::uint8_t* rgb, int w, int h);
+  // to the whole window, with `overlay` lines of text on top.
+  void show(const std::uint8_t* rgb, int w, int h, const std::vector<std::string>& overlay = {});
   void set_title(const std::string& title);
   const std::string& title() const noexcept { return title_; }
+  // SDL's video driver ("x11", "wayland", "offscreen", ...).
+  std::string driver() const;
+  // True for drivers that show nothing on a screen (offscreen, dummy).
+  bool invisible() const;
   int width() const noexcept { return width_; }
   int height() const noexcept { return height_; }
 

@@ -8,7 +8,6 @@
 #include <ctime>
 #include <filesystem>
 #include <iostream>
-#include <numbers>
 #include <sdfrt/image_io.hpp>
 
 namespace sdfc::viewer {
@@ -59,7 +58,7 @@ void Viewer::handle_event(const SDL_Event& e) {
           rig_.reset(scene_.module().plan.camera);
           moved_ = true;
           break;
-        case SDLK_F1: overlay_ = !overlay_; break;
+        case SDLK_F1: toggle_overlay(); break;
         case SDLK_c: std::cout << camera_yaml() << std::endl; break;
         case SDLK_p:
           try {
@@ -155,16 +154,34 @@ void Viewer::render_still() {
 }
 
 void Viewer::show(std::vector<std::uint8_t> rgb, int w, int h) {
-  window_.show(rgb.data(), w, h);
   shown_ = std::move(rgb);
+  shown_w_ = w;
+  shown_h_ = h;
+  window_.show(shown_.data(), w, h, overlay_lines());
+}
+
+void Viewer::toggle_overlay() {
+  overlay_ = !overlay_;
+  if (!shown_.empty()) window_.show(shown_.data(), shown_w_, shown_h_, overlay_lines());  // now, not next frame
+  update_title();
+}
+
+std::vector<std::string> Viewer::overlay_lines() const {
+  if (!overlay_) return {};
+  std::vector<std::string> lines = {
+      fmt::format("{:.1f} fps  {:.1f} ms", fps_, last_.ms),
+      fmt::format("{}x{}  1/{} res  {} spp", last_.width, last_.height, last_.divisor, last_.samples),
+      fmt::format("{}  speed x{:.3g}", rig_.mode() == CameraMode::Fly ? "fly" : "orbit", rig_.speed())};
+  if (!scene_.error().empty()) lines.push_back("error: see title / stderr");
+  return lines;
 }
 
 void Viewer::update_title() {
   std::string name = std::filesystem::path(scene_.options().path).filename().string();
   std::string title = fmt::format("sdfc view: {} [{}]", name, rig_.mode() == CameraMode::Fly ? "fly" : "orbit");
   if (overlay_)
-    title += fmt::format("  {:.1f} fps, {:.1f} ms, {}x{} (1/{} res), {} sample(s), speed x{:.3g}", fps_, last_.ms,
-                         last_.width, last_.height, last_.divisor, last_.samples, rig_.speed());
+    title += fmt::format("  {:.1f} fps, {:.1f} ms, {}x{} (1/{} res), {} sample(s)", fps_, last_.ms, last_.width,
+                         last_.height, last_.divisor, last_.samples);
   if (!scene_.error().empty()) title += "  ERROR (old kernel kept): " + first_line(scene_.error());
   window_.set_title(title);
 }
@@ -189,7 +206,7 @@ std::string Viewer::screenshot(const std::string& path) {
   return rep.path;
 }
 
-FrameStats Viewer::benchmark(double seconds) {
+FrameStats Viewer::benchmark(double seconds, double orbit_degrees) {
   const ir::Camera start = rig_.camera();
   // Warm-up: the first launch of a shape compiles PoCL's work-group function.
   scene_.render(start, opt_.width, opt_.height, 0.0);
@@ -201,7 +218,7 @@ FrameStats Viewer::benchmark(double seconds) {
     while (SDL_PollEvent(&e))
       if (e.type == SDL_QUIT || (e.type == SDL_KEYDOWN && e.key.keysym.sym == SDLK_ESCAPE)) quit_ = true;
     auto f0 = std::chrono::steady_clock::now();
-    rig_.orbit_to(start, 2.0 * std::numbers::pi * elapsed / seconds);
+    rig_.orbit_to(start, orbit_degrees * std::numbers::pi / 180.0 * elapsed / seconds);
     sdfrt::FloatImage img = scene_.render(rig_.camera(), opt_.width, opt_.height, 0.0);
     std::vector<std::uint8_t> rgb = sdfrt::to_rgb8(img);
     show(std::move(rgb), opt_.width, opt_.height);

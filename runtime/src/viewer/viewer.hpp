@@ -42,6 +42,9 @@ class Viewer {
 
   // Until Esc or the window is closed.
   void run();
+  // F1: the stats overlay on or off (also in the window title).
+  void toggle_overlay();
+  bool overlay() const noexcept { return overlay_; }
   // One pass of the loop: events, held keys, file poll, at most one render,
   // present. Returns false once asked to quit.
   bool step();
@@ -53,9 +56,10 @@ class Viewer {
   // C key: the current camera as a scene-file line.
   std::string camera_yaml() const { return viewer::camera_yaml(rig_.camera()); }
 
-  // Plays the built-in orbit around the scene's target for `seconds`, one
-  // full-resolution frame after another, and returns the frame statistics.
-  FrameStats benchmark(double seconds);
+  // Plays the built-in orbit around the scene's target (`orbit_degrees` in
+  // `seconds`; 0 keeps the camera still) one full-resolution frame after
+  // another, and returns the frame statistics.
+  FrameStats benchmark(double seconds, double orbit_degrees = 360);
 
   CameraRig& rig() noexcept { return rig_; }
   const FrameInfo& last_frame() const noexcept { return last_; }
@@ -70,6 +74,7 @@ class Viewer {
   void render_still();
   void update_title();
   void show(std::vector<std::uint8_t> rgb, int w, int h);
+  std::vector<std::string> overlay_lines() const;
   std::string fresh_screenshot_path() const;
 
   SceneSession& scene_;
@@ -87,6 +92,7 @@ class Viewer {
   double fps_ = 0;
   std::string last_screenshot_;
   std::vector<std::uint8_t> shown_;
+  int shown_w_ = 0, shown_h_ = 0;
 };
 
 }  // namespace sdfc::viewer
