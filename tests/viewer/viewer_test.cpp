@@ -263,6 +263,20 @@ TEST(Viewer, ABrokenSaveKeepsTheOldKernelAndReportsTheError) {
   EXPECT_EQ(window.title().find("ERROR"), std::string::npos) << window.title();
 }
 
+TEST(Viewer, AStillFrameIsAbandonedBetweenTilesWhenInputArrives) {
+  const std::string scene_path = std::string(SDFC_SOURCE_DIR) + "/examples/primitives.yaml";
+  SceneSession scene(device(), {scene_path, {}, 16});
+  const ir::Camera cam = scene.module().plan.camera;
+  int asked = 0;
+  auto after_two_tiles = [&] { return ++asked > 2; };
+  EXPECT_FALSE(scene.render_interruptible(cam, 300, 150, 0.0, 0, 0, after_two_tiles).has_value());
+  EXPECT_EQ(asked, 3);  // asked before the first tile, after the first and after the second
+  auto never = [] { return false; };
+  auto full = scene.render_interruptible(cam, 300, 150, 0.0, 0, 0, never);
+  ASSERT_TRUE(full.has_value());
+  EXPECT_EQ(sdfrt::to_rgb8(*full), sdfrt::to_rgb8(scene.render(cam, 300, 150, 0.0)));
+}
+
 TEST(Viewer, BenchmarkPrintsFrameStatistics) {
   std::string out = ::testing::TempDir() + "/viewer_benchmark.txt";
   std::string cmd = std::string("cd ") + SDFC_SOURCE_DIR + " && " + SDFC_BINARY +

@@ -2,6 +2,7 @@
 
 #include <sys/stat.h>
 
+#include <atomic>
 #include <sdfrt/errors.hpp>
 
 #include "sdfc/codegen/emit_opencl.hpp"
@@ -16,6 +17,14 @@ namespace {
 // function per launch shape, and the viewer's size changes with the
 // resolution scale, so uniform tiles mean one compile instead of dozens.
 constexpr int kTileWidth = 128, kTileHeight = 64;
+
+sdfrt::RenderOptions viewer_render_options() {
+  sdfrt::RenderOptions opt;
+  opt.tile_width = kTileWidth;
+  opt.tile_height = kTileHeight;
+  opt.uniform_launch = true;
+  return opt;
+}
 }  // namespace
 
 SceneSession::SceneSession(sdfrt::Device& device, SceneOptions options)
@@ -76,17 +85,36 @@ ReloadResult SceneSession::reload() {
 
 double SceneSession::distance_at(const ir::Vec3d& p) const { return reference::distance(*module_, p); }
 
-sdfrt::FloatImage SceneSession::render(const ir::Camera& camera, int width, int height, double time,
-                                       double offset_x, double offset_y, sdfrt::RenderStats* stats) {
+std::vector<float> SceneSession::frame_for(const ir::Camera& camera, int width, int height, double time,
+                                           double offset_x, double offset_y) const {
   ir::RenderPlan plan = module_->plan;
   plan.camera = camera;
   std::vector<float> frame = codegen::frame_params(plan, width, height, time);
   if (offset_x != 0 || offset_y != 0) offset_frame_rays(frame, width, height, offset_x, offset_y);
-  sdfrt::RenderOptions opt;
-  opt.tile_width = kTileWidth;
-  opt.tile_height = kTileHeight;
-  opt.uniform_launch = true;
-  return renderer_->render(frame, width, height, opt, stats);
+  return frame;
+}
+
+sdfrt::FloatImage SceneSession::render(const ir::Camera& camera, int width, int height, double time,
+                                       double offset_x, double offset_y, sdfrt::RenderStats* stats) {
+  return renderer_->render(frame_for(camera, width, height, time, offset_x, offset_y), width, height,
+                           viewer_render_options(), stats);
+}
+
+std::optional<sdfrt::FloatImage> SceneSession::render_interruptible(const ir::Camera& camera, int width, int height,
+                                                                    double time, double offset_x, double offset_y,
+                                                                    const std::function<bool()>& interrupt,
+                                                                    sdfrt::RenderStats* stats) {
+  std::atomic<bool> stop{false};
+  sdfrt::RenderOptions opt = viewer_render_options();
+  opt.cancel = &stop;
+  opt.progress = [&](int, int) {
+    if (interrupt()) stop = true;
+  };
+  try {
+    return renderer_->render(frame_for(camera, width, height, time, offset_x, offset_y), width, height, opt, stats);
+  } catch (const sdfrt::Cancelled&) {
+    return std::nullopt;
+  }
 }
 
 void offset_frame_rays(std::vector<float>& frame, int width, int height, double dx, double dy) {

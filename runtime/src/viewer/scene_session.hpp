@@ -6,7 +6,9 @@
 #include <sdfrt/float_image.hpp>
 #include <sdfrt/renderer.hpp>
 
+#include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -51,6 +53,12 @@ class SceneSession {
   // anti-aliasing; {0, 0} is exactly what `sdfc render` computes.
   sdfrt::FloatImage render(const ir::Camera& camera, int width, int height, double time,
                            double offset_x = 0, double offset_y = 0, sdfrt::RenderStats* stats = nullptr);
+  // The same, but `interrupt` is asked between tiles; when it returns true
+  // the frame is abandoned and nullopt returned.
+  std::optional<sdfrt::FloatImage> render_interruptible(const ir::Camera& camera, int width, int height,
+                                                        double time, double offset_x, double offset_y,
+                                                        const std::function<bool()>& interrupt,
+                                                        sdfrt::RenderStats* stats = nullptr);
 
  private:
   struct Stamp {
@@ -59,6 +67,8 @@ class SceneSession {
   };
   Stamp read_stamp() const;
   void compile();  // throws; replaces module_/renderer_ only on success
+  std::vector<float> frame_for(const ir::Camera& camera, int width, int height, double time, double offset_x,
+                               double offset_y) const;
 
   sdfrt::Device* device_;
   SceneOptions options_;

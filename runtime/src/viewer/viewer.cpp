@@ -138,16 +138,31 @@ void Viewer::render_moving() {
   fps_ = st.total_ms > 0 ? 1000.0 / st.total_ms : 0;
 }
 
+// True when the user has started to move: a still frame in progress is
+// then dropped so the motion is answered at once (checked between tiles).
+bool Viewer::input_pending() const {
+  SDL_PumpEvents();
+  if (SDL_HasEvents(SDL_KEYDOWN, SDL_KEYUP) || SDL_HasEvent(SDL_MOUSEWHEEL) || SDL_HasEvent(SDL_QUIT)) return true;
+  if (SDL_GetMouseState(nullptr, nullptr) & (SDL_BUTTON_LMASK | SDL_BUTTON_RMASK))
+    return SDL_HasEvent(SDL_MOUSEMOTION);
+  return false;
+}
+
 void Viewer::render_still() {
   if (moved_) samples_.reset();
-  moved_ = false;
   auto [ox, oy] = sample_offset(samples_.samples());
   sdfrt::RenderStats st;
-  sdfrt::FloatImage img = scene_.render(rig_.camera(), opt_.width, opt_.height, 0.0, ox, oy, &st);
+  std::optional<sdfrt::FloatImage> img = scene_.render_interruptible(rig_.camera(), opt_.width, opt_.height, 0.0, ox,
+                                                                     oy, [this] { return input_pending(); }, &st);
+  if (!img) {
+    last_.rendered = false;
+    return;  // moved_ stays as it was: the next still frame starts over
+  }
+  moved_ = false;
   governor_.record(static_cast<long long>(opt_.width) * opt_.height, st.total_ms);
-  samples_.add(img, scene_.module().plan.march.gamma);
+  samples_.add(*img, scene_.module().plan.march.gamma);
   // The first sample is shown as the kernel wrote it: exactly `sdfc render`.
-  std::vector<std::uint8_t> rgb = samples_.samples() == 1 ? sdfrt::to_rgb8(img) : samples_.rgb8();
+  std::vector<std::uint8_t> rgb = samples_.samples() == 1 ? sdfrt::to_rgb8(*img) : samples_.rgb8();
   show(std::move(rgb), opt_.width, opt_.height);
   last_ = {opt_.width, opt_.height, 1, samples_.samples(), st.total_ms, true};
   fps_ = st.total_ms > 0 ? 1000.0 / st.total_ms : 0;

@@ -72,6 +72,7 @@ class Viewer {
   void poll_scene();
   void render_moving();
   void render_still();
+  bool input_pending() const;
   void update_title();
   void show(std::vector<std::uint8_t> rgb, int w, int h);
   std::vector<std::string> overlay_lines() const;
