@@ -36,7 +36,6 @@ void CameraRig::reset(const ir::Camera& start) {
   fwd_ = normalize(d);
   up_ = normalize(start.up);
   fov_ = start.fov_degrees;
-  mode_ = CameraMode::Fly;
 }
 
 void CameraRig::turn(double yaw, double pitch) {

@@ -21,7 +21,7 @@ class CameraRig {
  public:
   explicit CameraRig(const ir::Camera& start);
 
-  // Back to `start` (R key, and the first camera of the scene).
+  // Back to `start` (R key, and the first camera of the scene); the mode stays.
   void reset(const ir::Camera& start);
   // Moves by one frame of input. Translation speed is speed() * |DE at the
   // camera| per second, so approaching a surface slows down by itself.
