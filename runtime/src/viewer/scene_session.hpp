@@ -34,6 +34,8 @@ class SceneSession {
   // the stamp has been seen unchanged on one more poll, so an editor's
   // truncate-then-write is not compiled half-written.
   ReloadResult poll();
+  // True when the next poll() will recompile if the file stays as it is.
+  bool change_pending() const noexcept { return has_pending_; }
   // Recompiles now, whatever the stamp says.
   ReloadResult reload();
 

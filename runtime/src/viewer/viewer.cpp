@@ -75,6 +75,8 @@ void Viewer::handle_event(const SDL_Event& e) {
 }
 
 void Viewer::poll_scene() {
+  // Compiling blocks the loop for a moment; say why the window is frozen.
+  if (scene_.change_pending()) window_.set_title(window_.title() + "  (compiling...)");
   ReloadResult r = scene_.poll();
   if (r == ReloadResult::Reloaded) {
     std::cerr << fmt::format("reloaded {} (kernel #{})\n", scene_.options().path, scene_.generation());
