@@ -15,5 +15,6 @@ Action add_render(CLI::App& app);
 Action add_devices(CLI::App& app);
 Action add_view(CLI::App& app);
 Action add_audit(CLI::App& app);
+Action add_compare(CLI::App& app);
 
 }  // namespace sdfc::cli

@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
   reg(add_devices);
   reg(add_view);
   reg(add_audit);
+  reg(add_compare);
 
   try {
     app.parse(argc, argv);
