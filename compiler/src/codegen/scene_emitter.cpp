@@ -5,12 +5,12 @@
 
 #include <fmt/format.h>
 
-#include "catalogue_emitter.hpp"
 #include <algorithm>
 #include <cmath>
 
+#include "catalogue_emitter.hpp"
+#include "fractal_emitter.hpp"
 #include "sdfc/expr/expr.hpp"
-#include "sdfc/ir/fractal_math.hpp"
 
 namespace sdfc::codegen::detail {
 
@@ -110,9 +110,6 @@ class SceneEmitter {
       case Kind::Capsule:
         return leaf(n, fmt::format("{}({}, {}, {}, {})", call("sd_capsule"), p, lit_.vec3({q[0], q[1], q[2]}),
                                    lit_.vec3({q[3], q[4], q[5]}), r(6)));
-      case Kind::Mandelbulb:
-        return leaf(n, fmt::format("{}({}, {}, {}, {}, {})", call("de_mandelbulb"), p, r(0), int(q[1]), r(2),
-                                   lit_.real(ir::mandelbulb_set_radius(q[0]))));
       case Kind::Translate: {
         std::string p2 = var("p");
         w_.line(fmt::format("vec3 {} = v3_sub({}, {});  // {}", p2, p, lit_.vec3({q[0], q[1], q[2]}), describe(n)));
@@ -132,6 +129,24 @@ class SceneEmitter {
         std::string d = var("d");
         w_.line(fmt::format("real {} = {} * {};  // undo the scale on the distance", d, c.d, r(0)));
         return {d, c.mat};
+      }
+      case Kind::Bounded: {
+        // Skip the subtree while every lane is farther from its box than the
+        // margin: the box distance is a lower bound of the subtree's.
+        ir::Vec3d c, h;
+        for (int i = 0; i < 3; ++i) c[i] = 0.5 * (q[i] + q[i + 3]), h[i] = 0.5 * (q[i + 3] - q[i]);
+        std::string b = var("b"), d = var("d"), m = with_mat_ ? var("m") : "";
+        w_.line(fmt::format("real {} = {}(v3_sub({}, {}), {}, {});  // bounding box{}", b, call("sd_box"), p, lit_.vec3(c),
+                            lit_.vec3(h), lit_.real(0), where(n)));
+        w_.line(fmt::format("real {} = {};", d, b));
+        if (with_mat_) w_.line(fmt::format("real {} = {};", m, lit_.typed(0)));
+        w_.line(fmt::format("if (M_ANY({} <= {}))", b, r(6)));
+        w_.open("{");
+        Value inner = emit(n.children[0], p);
+        w_.line(fmt::format("{} = SEL({}, {}, {} > {});", d, inner.d, b, b, r(6)));
+        if (with_mat_) w_.line(fmt::format("{} = SEL({}, {}, {} > {});", m, inner.mat, lit_.typed(0), b, r(6)));
+        w_.close("}");
+        return {d, m};
       }
       case Kind::Material: {
         Value c = emit(n.children[0], p);
@@ -209,6 +224,10 @@ class SceneEmitter {
       }
       default:
         if (auto e = catalogue_call(n, p, lit_, used_)) return leaf(n, *e);
+        if (is_fractal(n)) {
+          std::string expr = emit_fractal(n, p, lit_, w_, used_);
+          return leaf(n, expr);
+        }
         return combine(n, p);
     }
   }

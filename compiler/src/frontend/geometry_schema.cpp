@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "fractal_schema.hpp"
+
 #include <cmath>
 #include <algorithm>
 #include <numbers>
@@ -16,10 +18,11 @@ using ir::NodeId;
 
 const std::vector<std::string_view>& geometry_kinds() {
   static const std::vector<std::string_view> k = {
-      "sphere", "box", "torus", "plane", "cylinder", "capsule", "mandelbulb", "union", "intersection",
+      "sphere", "box", "torus", "plane", "cylinder", "capsule", "union", "intersection",
       "difference", "smooth_union", "smooth_intersection", "smooth_difference"};
   static const std::vector<std::string_view> all = [] {
     std::vector<std::string_view> v = k;
+    for (auto f : fractal_kinds()) v.push_back(f);
     v.insert(v.end(), catalogue_kinds().begin(), catalogue_kinds().end());
     v.insert(v.end(), blend_kinds().begin(), blend_kinds().end());
     return v;
@@ -162,13 +165,8 @@ NodeId GeometryLowering::lower_kind(const SourceValue& key, const SourceValue& b
     double radius = m.number("radius", 0.25, Range::positive());
     return b_.make(Kind::Capsule, {a[0], a[1], a[2], bb[0], bb[1], bb[2], radius}, {}, at);
   }
-  if (k == "mandelbulb") {
-    MapReader m(r_, body, what, {"power", "iterations", "bailout"});
-    double power = m.number("power", 8.0, Range::closed(1, 64));
-    int iterations = m.integer("iterations", 10, 1, 1000);
-    double bailout = m.number("bailout", 2.0, {0, 1e3, true});
-    return b_.make(Kind::Mandelbulb, {power, double(iterations), bailout}, {}, at);
-  }
+  for (auto f : fractal_kinds())
+    if (k == f) return lower_fractal(r_, b_, key, body);
   if (auto n = lower_catalogue(r_, b_, key, body)) return *n;
   r_.sink().error(at, fmt::format("unknown node kind '{}'", k), did_you_mean(k, geometry_kinds()));
   return ir::kNoNode;

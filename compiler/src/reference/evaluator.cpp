@@ -6,6 +6,7 @@
 #include <cmath>
 #include <vector>
 
+#include "fractals.hpp"
 #include "catalogue.hpp"
 #include "domain.hpp"
 #include "sdfc/ir/fractal_math.hpp"
@@ -108,6 +109,13 @@ Sample evaluate_node(const ir::Graph& g, ir::NodeId id, const Vec3& p) {
       return {len(pa[0] - ba[0] * h, pa[1] - ba[1] * h, pa[2] - ba[2] * h) - q[6], 0};
     }
     case Kind::Mandelbulb: return {mandelbulb(p, q[0], int(q[1]), q[2]), 0};
+    case Kind::Juliabulb: return {fractals::juliabulb(p, q), 0};
+    case Kind::Mandelbox: return {fractals::mandelbox(p, q), 0};
+    case Kind::QuaternionJulia: return {fractals::quaternion_julia(p, q), 0};
+    case Kind::Menger: return {fractals::menger(p, q), 0};
+    case Kind::Sierpinski: return {fractals::sierpinski(p, q), 0};
+    case Kind::Kifs: return {fractals::kifs(p, q), 0};
+    case Kind::Hybrid: return {fractals::hybrid(p, q), 0};
     case Kind::Translate: return evaluate(g, n.children[0], {p[0] - q[0], p[1] - q[1], p[2] - q[2]});
     case Kind::Rotate: {
       // Stored local->world; apply the transpose to go world->local.
@@ -118,6 +126,16 @@ Sample evaluate_node(const ir::Graph& g, ir::NodeId id, const Vec3& p) {
     case Kind::Scale: {
       Sample s = evaluate(g, n.children[0], {p[0] / q[0], p[1] / q[0], p[2] / q[0]});
       return {s.distance * q[0], s.material};
+    }
+    case Kind::Bounded: {
+      // The box's exact distance is a lower bound of the child's; far enough
+      // out it stands in for the child, which is then not evaluated.
+      double c[3], h[3];
+      for (int i = 0; i < 3; ++i) c[i] = 0.5 * (q[i] + q[i + 3]), h[i] = 0.5 * (q[i + 3] - q[i]);
+      double dx = std::fabs(p[0] - c[0]) - h[0], dy = std::fabs(p[1] - c[1]) - h[1], dz = std::fabs(p[2] - c[2]) - h[2];
+      double box = len(std::max(dx, 0.0), std::max(dy, 0.0), std::max(dz, 0.0)) + std::min(std::max({dx, dy, dz}), 0.0);
+      if (box > q[6]) return {box, 0};
+      return evaluate(g, n.children[0], p);
     }
     case Kind::Material: {
       Sample s = evaluate(g, n.children[0], p);
