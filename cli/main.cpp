@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
   reg(add_compile);
   reg(add_render);
   reg(add_devices);
+  reg(add_view);
 
   try {
     app.parse(argc, argv);
