@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
   reg(add_render);
   reg(add_devices);
   reg(add_view);
+  reg(add_audit);
 
   try {
     app.parse(argc, argv);

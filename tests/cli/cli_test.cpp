@@ -131,3 +131,22 @@ TEST(Cli, DevicesListsPocl) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(Cli, AuditRunsOnAScene) {
+  Result r = sdfc("audit examples/primitives.yaml --rays 16 --lines 8");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("node"), std::string::npos);
+  EXPECT_NE(r.out.find("torus"), std::string::npos) << r.out;
+  Result j = sdfc("audit examples/primitives.yaml --rays 16 --lines 8 --json");
+  EXPECT_EQ(j.out.rfind("{\"nodes\": [", 0), 0u) << j.out;
+  std::string steep = write_scene("steep.yaml",
+                                  "render: {lipschitz_correction: false}\n"
+                                  "scene: {box: {size: [1.0, 0.3, 2.0]}, twist: {axis: z, rate: 3}}\n");
+  Result s = sdfc("audit " + steep + " --strict");
+  EXPECT_EQ(s.code, 1) << s.out << s.err;
+  EXPECT_NE(s.out.find("WARNING"), std::string::npos) << s.out;
+}
+
+}  // namespace
