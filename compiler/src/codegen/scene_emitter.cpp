@@ -5,13 +5,12 @@
 
 #include <fmt/format.h>
 
-#include "fractal_emitter.hpp"
-#include "catalogue_emitter.hpp"
 #include <algorithm>
 #include <cmath>
 
+#include "catalogue_emitter.hpp"
+#include "fractal_emitter.hpp"
 #include "sdfc/expr/expr.hpp"
-#include "sdfc/ir/fractal_math.hpp"
 
 namespace sdfc::codegen::detail {
 

@@ -36,6 +36,11 @@ ir::NodeId wrap(ir::Builder& b, ir::NodeId child) {
                          {child}, c.loc);
   ir::Props p = c.props;
   p.cost += 16;
+  // The child divides itself by its L where it is corrected; the wrapper
+  // sees a bound with L = 1 and must not divide again.
+  if (p.corrected) p.lipschitz = 1, p.cls = ir::DistanceClass::Bound;
+  p.corrected = false;
+  p.lipschitz_region = ir::Box3::everything();
   b.graph().mutable_node(id).props = p;
   return id;
 }
