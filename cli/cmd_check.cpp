@@ -1,6 +1,8 @@
 // sdfc check SCENE: parse, validate and summarise on one screen.
 #include <fmt/format.h>
 
+#include "sdfc/ir/de_info.hpp"
+
 #include <iostream>
 
 #include "cli_support.hpp"
@@ -35,7 +37,9 @@ int run_check(const SceneArgs& args) {
     auto cat = ir::info(n.kind).category;
     if (cat != ir::Category::Primitive && cat != ir::Category::Fractal) continue;
     std::string at = n.loc.line > 0 ? fmt::format("line {}", n.loc.line) : "";
-    fmt::print("  {:<12} {:<8} L = {:<4} {}\n", ir::info(n.kind).name, ir::to_string(n.props.cls), n.props.lipschitz, at);
+    std::string de = ir::de_summary(n);  // fractals: the estimator and what it promises
+    fmt::print("  {:<12} {:<8} L = {:<4} {}{}\n", ir::info(n.kind).name, ir::to_string(n.props.cls), n.props.lipschitz, at,
+               de.empty() ? "" : "  " + de);
   }
   const auto& p = m.plan;
   std::string lights;

@@ -206,7 +206,7 @@ inline vec3 shade_encode(vec3 c, real inv_gamma)
 // ---- scene distance: the march evaluates this at every step ----
 real scene_dist(vec3 p)
 {
-    real d0 = de_mandelbulb_int(p, 8, 10, 2.0f, 1.1040895f, 0, v3_splat(0.0f));  // mandelbulb power=8 iterations=10 bailout=2  (mandelbulb.yaml:13)
+    real d0 = de_mandelbulb_int(p, 8, 10, 2.0f, 1.1040895f, 0, v3_splat(0.0f));  // mandelbulb power=8 iterations=10 bailout=2 method=0  (mandelbulb.yaml:13)
     vec3 p1 = v3_sub(p, v3(0.0f, 0.0f, -1.3f));  // translate x=0 y=0 z=-1.3  (mandelbulb.yaml:16)
     real d2 = sd_box(p1, v3(2.0f, 2.0f, 0.05f), 0.0f);  // box hx=2 hy=2 hz=0.05 radius=0  (mandelbulb.yaml:15)
     real d3 = d0;  // union  (mandelbulb.yaml:12)
@@ -217,7 +217,7 @@ real scene_dist(vec3 p)
 // ---- scene distance with material: evaluated once per hit ----
 real scene_dist_mat(vec3 p, real* mat)
 {
-    real d0 = de_mandelbulb_int(p, 8, 10, 2.0f, 1.1040895f, 0, v3_splat(0.0f));  // mandelbulb power=8 iterations=10 bailout=2  (mandelbulb.yaml:13)
+    real d0 = de_mandelbulb_int(p, 8, 10, 2.0f, 1.1040895f, 0, v3_splat(0.0f));  // mandelbulb power=8 iterations=10 bailout=2 method=0  (mandelbulb.yaml:13)
     vec3 p1 = v3_sub(p, v3(0.0f, 0.0f, -1.3f));  // translate x=0 y=0 z=-1.3  (mandelbulb.yaml:16)
     real d2 = sd_box(p1, v3(2.0f, 2.0f, 0.05f), 0.0f);  // box hx=2 hy=2 hz=0.05 radius=0  (mandelbulb.yaml:15)
     real d3 = d0;  // union  (mandelbulb.yaml:12)

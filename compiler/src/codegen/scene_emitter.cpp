@@ -99,6 +99,12 @@ class SceneEmitter {
         w_.line(fmt::format("real {} = {} * {};  // undo the scale on the distance", d, c.d, r(0)));
         return {d, c.mat};
       }
+      case Kind::StepFactor: {
+        Value c = emit(n.children[0], p);
+        std::string d = var("d");
+        w_.line(fmt::format("real {} = {} * {};  // {}", d, c.d, r(0), describe(n)));
+        return {d, c.mat};
+      }
       case Kind::Material: {
         Value c = emit(n.children[0], p);
         if (!with_mat_) return c;

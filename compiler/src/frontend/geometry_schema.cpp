@@ -26,7 +26,7 @@ const std::vector<std::string_view>& geometry_kinds() {
 }
 
 const std::vector<std::string_view>& geometry_modifiers() {
-  static const std::vector<std::string_view> k = {"translate", "rotate", "scale", "material"};
+  static const std::vector<std::string_view> k = {"translate", "rotate", "scale", "material", "step_factor"};
   return k;
 }
 
@@ -203,6 +203,11 @@ NodeId GeometryLowering::apply_modifiers(const SourceValue& node, NodeId n) {
   if (const SourceValue* t = node.find("translate")) {
     Vec3d v = r_.vec3(*t, "translate");
     n = b_.make(Kind::Translate, {v[0], v[1], v[2]}, {n}, t->loc);
+  }
+  if (const SourceValue* f = node.find("step_factor")) {
+    // The fudge factor, local to this node: its distance times f.
+    double factor = r_.number(*f, "step_factor", {0, 2, true});
+    n = b_.make(Kind::StepFactor, {factor}, {n}, f->loc);
   }
   if (const SourceValue* mat = node.find("material")) {
     if (!mat->is_scalar()) {
