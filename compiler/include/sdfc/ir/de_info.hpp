@@ -25,6 +25,8 @@ inline std::string de_summary(const Node& n) {
   bool non_conformal = n.kind == Kind::Mandelbox && (n.params[9] != n.params[10] || n.params[10] != n.params[11]);
   if (non_conformal && method == DeMethod::Analytic)
     return what + ", unknown (non-conformal: the scalar derivative can overshoot; use de: jacobian)";
+  if (n.kind == Kind::Hybrid) return what + ", unknown (mixed scalar derivatives overshoot; lower step_factor)";
+  if (method == DeMethod::Jacobian) return what + ", near-exact (can overshoot slightly: no conservative term)";
   return what + ", bound in practice (not proven)";
 }
 
