@@ -83,7 +83,10 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
   w.line(fmt::format("vec3 n = {}(pos, h);", normal_fn));
   w.line("real mat;");
   w.line("(void)scene_dist_mat(pos, &mat);");
-  w.line("vec3 lit = shade_surface(pos, n, v3_scale(rd, -1.0f), mat);");
+  bool traps = false;
+  for (const auto& md : m.plan.materials) traps = traps || !md.trap_palette.empty();
+  if (traps) w.line("real trap = scene_trap(pos);  // orbit-trap colour, once per hit");
+  w.line(std::string("vec3 lit = shade_surface(pos, n, v3_scale(rd, -1.0f), mat") + (traps ? ", trap" : "") + ");");
   w.line("color = v3_select(color, lit, hit);");
   w.close("}");
   w.line(fmt::format("color = shade_encode(color, {});", lit.real(1.0 / s.gamma)));

@@ -107,6 +107,20 @@ void read_lights(ValueReader& r, const SourceValue& v, ir::RenderPlan& plan) {
   }
 }
 
+// orbit_trap: {palette: [[r, g, b], ...], mix: 0.7}: 2 to 16 colours.
+void read_orbit_trap(ValueReader& r, const SourceValue& v, ir::MaterialDef& md) {
+  std::string what = "material '" + md.name + "'.orbit_trap";
+  MapReader m(r, v, what, {"palette", "mix"});
+  md.trap_mix = m.number("mix", 0.7, Range::closed(0, 1));
+  const SourceValue* p = m.require("palette");
+  if (!p) return;
+  if (!p->is_seq() || p->items.size() < 2 || p->items.size() > 16) {
+    r.sink().error(p->loc, what + ".palette: expected a list of 2 to 16 colours [r, g, b]", "");
+    return;
+  }
+  for (const auto& c : p->items) md.trap_palette.push_back(r.vec3(c, what + ".palette", Range::closed(0, 1)));
+}
+
 void read_materials(ValueReader& r, const SourceValue& v, ir::RenderPlan& plan) {
   if (!v.is_map()) {
     r.sink().error(v.loc, "materials: expected a map from names to materials, e.g. 'bone: {color: [0.9, 0.85, 0.75]}'", "");
@@ -120,10 +134,11 @@ void read_materials(ValueReader& r, const SourceValue& v, ir::RenderPlan& plan) 
       r.sink().error(key.loc, "'default' is the built-in material's name", "choose another name");
       continue;
     }
-    MapReader m(r, body, "material '" + md.name + "'", {"color", "specular", "shininess"});
+    MapReader m(r, body, "material '" + md.name + "'", {"color", "specular", "shininess", "orbit_trap"});
     md.color = m.vec3("color", md.color, Range::closed(0, 1));
     md.specular = m.number("specular", md.specular, Range::closed(0, 100));
     md.shininess = m.number("shininess", md.shininess, Range::closed(1, 10000));
+    if (const SourceValue* t = m.get("orbit_trap")) read_orbit_trap(r, *t, md);
     plan.materials.push_back(md);
   }
 }
@@ -154,7 +169,9 @@ ir::Module lower_scene(const SourceValue& doc, const std::string& source_name) {
   MapReader top(r, doc, "the scene file", {"camera", "render", "background", "lights", "materials", "scene"});
 
   ir::RenderPlan& plan = m.plan;
-  plan.materials.push_back({"default", {0.8, 0.8, 0.8}, 0.2, 32, {}});
+  ir::MaterialDef builtin;  // the default material: the MaterialDef defaults
+  builtin.name = "default";
+  plan.materials.push_back(builtin);
   if (auto* v = top.get("camera")) read_camera(r, *v, plan.camera);
   if (auto* v = top.get("render")) read_render(r, *v, plan.march);
   if (auto* v = top.get("background")) read_background(r, *v, plan.background);
