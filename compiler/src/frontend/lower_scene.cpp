@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "sdfc/frontend/geometry_schema.hpp"
+#include "sdfc/ir/dual_normals.hpp"
 #include "sdfc/frontend/value_reader.hpp"
 
 namespace sdfc {
@@ -51,8 +52,10 @@ void read_render(ValueReader& r, const SourceValue& v, ir::MarchSettings& s) {
   s.max_distance = m.number("max_distance", s.max_distance, Range::positive());
   s.step_factor = m.number("step_factor", s.step_factor, {0, 2, true});
   s.gamma = m.number("gamma", s.gamma, {0, 10, true});
-  s.normals = m.word("normals", "tetrahedral", {"tetrahedral", "central"}) == "central" ? ir::NormalMethod::Central
-                                                                                         : ir::NormalMethod::Tetrahedral;
+  std::string normals = m.word("normals", "tetrahedral", {"tetrahedral", "central", "dual"});
+  s.normals = normals == "central" ? ir::NormalMethod::Central
+              : normals == "dual"  ? ir::NormalMethod::Dual
+                                   : ir::NormalMethod::Tetrahedral;
 }
 
 void read_background(ValueReader& r, const SourceValue& v, ir::Background& bg) {
@@ -157,6 +160,22 @@ void add_default_ambient(ir::RenderPlan& plan) {
 
 }  // namespace
 
+// render.normals: dual needs every node to carry an exact gradient; name the
+// first that cannot, at the `normals` setting.
+void check_dual_normals(ValueReader& r, const MapReader& top, const ir::Graph& g, ir::NodeId root) {
+  for (ir::NodeId id : g.postorder(root)) {
+    const ir::Node& n = g.node(id);
+    if (ir::supports_dual_normals(n.kind)) continue;
+    const SourceValue* at = top.get("render")->find("normals");
+    r.sink().error(at->loc,
+                   fmt::format("render.normals: dual needs dual-number derivatives, which '{}' (line {}) does not have; "
+                               "they exist for {}",
+                               ir::info(n.kind).name, n.loc.line, ir::dual_normal_kinds()),
+                   "use 'normals: tetrahedral' or 'normals: central' for this scene");
+    return;
+  }
+}
+
 ir::Module lower_scene(const SourceValue& doc, const std::string& source_name) {
   DiagnosticSink sink;
   ValueReader r(sink);
@@ -189,6 +208,7 @@ ir::Module lower_scene(const SourceValue& doc, const std::string& source_name) {
   if (const SourceValue* scene = top.require("scene")) {
     frontend::GeometryLowering g(r, b, plan);
     m.root = g.lower(*scene);
+    if (m.root != ir::kNoNode && plan.march.normals == ir::NormalMethod::Dual) check_dual_normals(r, top, *m.graph, m.root);
   }
   sink.throw_if_any();
   return m;

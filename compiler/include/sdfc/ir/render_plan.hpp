@@ -21,7 +21,7 @@ struct Camera {
 };
 
 enum class Precision { Float, Double };
-enum class NormalMethod { Tetrahedral, Central };
+enum class NormalMethod { Tetrahedral, Central, Dual };
 
 struct MarchSettings {
   int width = 1280;
