@@ -89,6 +89,9 @@ class GradientEmitter {
         return {d, g};
       }
       case Kind::Material: return emit(n.children[0], p);
+      // A bounding box the optimiser inserted: at a hit the point is inside
+      // its margin, so the distance and gradient are the child's.
+      case Kind::Bounded: return emit(n.children[0], p);
       case Kind::SmoothUnion:
       case Kind::SmoothIntersection:
       case Kind::SmoothDifference: {
