@@ -1,6 +1,8 @@
 // sdfc check SCENE: parse, validate and summarise on one screen.
 #include <fmt/format.h>
 
+#include "sdfc/ir/de_info.hpp"
+
 #include <iostream>
 
 #include "cli_support.hpp"
@@ -43,6 +45,8 @@ int run_check(const SceneArgs& args) {
       corrected += n.props.corrected;
       note = n.props.corrected ? "  corrected: distance / L here" : "  NOT corrected (render.lipschitz_correction: false)";
     }
+    std::string de = ir::de_summary(n);  // fractals: the estimator and what it promises
+    if (!de.empty()) note += "  " + de;
     fmt::print("  {:<20} {:<9} L = {:<6.4g} {}{}\n", ir::info(n.kind).name, ir::to_string(n.props.cls), n.props.lipschitz,
                at, note);
   }

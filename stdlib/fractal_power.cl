@@ -1,7 +1,7 @@
 //! fn ipow_real
 //! class: helper
 // x^n for a non-negative integer n known when the kernel is built, by
-// square-and-multiply: no pow(), no log/exp.
+// square-and-multiply: no power function, no log/exp.
 inline real ipow_real(real x, int n)
 {
     real acc = 1.0f;
@@ -48,7 +48,7 @@ inline vec3 bulb_power_int(vec3 z, int n, real* r_pow_n_minus_1)
     real r = v3_length(z);
     real rho = sqrt(z.x * z.x + z.y * z.y);
     real inv_r = 1.0f / fmax(r, K(1e-20f));
-    mask on_axis = rho < 1e-20f;  // atan2(0, 0) = 0: the azimuth is 0 there
+    mask on_axis = rho < 1e-20f;  // on the z axis the azimuth is 0, as in the trig formula
     real inv_rho = 1.0f / fmax(rho, K(1e-20f));
     real cos_nt, sin_nt, cos_nf, sin_nf;
     cpow_int(z.z * inv_r, rho * inv_r, n, &cos_nt, &sin_nt);

@@ -79,3 +79,75 @@ TEST(Specialisation, WidthSelectsThePacketTypes) {
 
 }  // namespace
 }  // namespace sdfc
+
+namespace sdfc {
+namespace {
+
+// The scene function (after the stdlib) of a kernel.
+std::string scene_part(const std::string& k) { return k.substr(k.find("// ---- scene distance")); }
+
+// The text of one stdlib function in a kernel (its signature to its closing brace).
+std::string function_text(const std::string& k, const std::string& name) {
+  size_t at = k.find(name + "(");
+  while (at != std::string::npos && k.rfind("inline", at) + 40 < at) at = k.find(name + "(", at + 1);
+  if (at == std::string::npos) return "";
+  return k.substr(at, k.find("\n}\n", at) - at);
+}
+
+// An integer Mandelbulb/Juliabulb power is iterated without any trig; other
+// powers keep the trig formula (both are checked against the reference in
+// the conformance suite).
+TEST(Specialisation, IntegerMandelbulbPowerUsesNoTrig) {
+  for (const char* scene : {"scene: {mandelbulb: {power: 8}}\n", "scene: {mandelbulb: {power: 5, julia: [0.3, 0, 0]}}\n"}) {
+    std::string k = kernel_of(scene);
+    EXPECT_TRUE(has(k, "de_mandelbulb_int(p")) << scene;
+    for (const char* fn : {"de_mandelbulb_int", "bulb_power_int", "cpow_int", "ipow_real"}) {
+      std::string body = function_text(k, fn);
+      ASSERT_FALSE(body.empty()) << fn;
+      for (const char* trig : {"acos(", "atan2(", "sin(", "cos(", "pow("}) EXPECT_FALSE(has(body, trig)) << fn << " " << trig;
+    }
+    EXPECT_FALSE(has(k, "acos(")) << scene;
+    EXPECT_FALSE(has(k, "atan2(")) << scene;
+  }
+  std::string real_power = kernel_of("scene: {mandelbulb: {power: 7.5}}\n");
+  EXPECT_TRUE(has(scene_part(real_power), "de_mandelbulb(p"));
+  EXPECT_TRUE(has(real_power, "acos("));
+}
+
+TEST(Specialisation, DeMethodPicksTheEstimator) {
+  EXPECT_TRUE(has(scene_part(kernel_of("scene: {mandelbox: {de: jacobian}}\n")), "de_mandelbox_jacobian(p"));
+  EXPECT_TRUE(has(scene_part(kernel_of("scene: {mandelbox: {de: dual}}\n")), "de_mandelbox_jacobian(p"));
+  EXPECT_TRUE(has(scene_part(kernel_of("scene: {mandelbox: {}}\n")), "de_mandelbox(p"));
+  std::string g = scene_part(kernel_of("scene: {mandelbulb: {de: gradient}}\n"));
+  EXPECT_TRUE(has(g, "de_mandelbulb_numeric(p")) << g;
+  EXPECT_TRUE(has(g, "/* de: gradient */")) << g;
+  std::string f = scene_part(kernel_of("scene: {menger: {}, step_factor: 0.6}\n"));
+  EXPECT_TRUE(has(f, "* 0.6f;  // step_factor")) << f;
+}
+
+}  // namespace
+}  // namespace sdfc
+
+namespace sdfc {
+namespace {
+
+// Orbit-trap colour is computed once per hit, by its own function, never in
+// the march: scene_dist (what the march calls) has no trap code.
+TEST(Specialisation, OrbitTrapOnlyAtTheHit) {
+  std::string k = codegen::emit_opencl(passes::run_pipeline(test::lower_text(
+      "materials: {glow: {orbit_trap: {palette: [[0, 0, 1], [1, 0.5, 0]], mix: 0.6}}}\n"
+      "scene: {union: [{mandelbox: {}, material: glow}, {sphere: {radius: 1}, translate: [9, 0, 0]}]}\n")), {1, false}).source;
+  size_t dist = k.find("real scene_dist(vec3 p)"), dist_end = k.find("\n}\n", dist);
+  ASSERT_NE(dist, std::string::npos);
+  EXPECT_EQ(k.substr(dist, dist_end - dist).find("trap"), std::string::npos);
+  EXPECT_NE(k.find("real scene_trap(vec3 p)"), std::string::npos);
+  EXPECT_NE(k.find("trap_mandelbox(p"), std::string::npos);
+  EXPECT_NE(k.find("real trap = scene_trap(pos);"), std::string::npos);
+  EXPECT_NE(k.find("v3_mix(*albedo, pal, (real)(0.6f))"), std::string::npos) << k;
+  // Without an orbit-trap material there is no trap code at all.
+  std::string plain = codegen::emit_opencl(passes::run_pipeline(test::lower_text("scene: {mandelbox: {}}\n")), {1, false}).source;
+  EXPECT_EQ(plain.find("trap"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace sdfc

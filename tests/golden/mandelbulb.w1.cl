@@ -74,7 +74,7 @@ inline void cpow_int(real re, real im, int n, real* out_re, real* out_im)
 //! fn ipow_real
 //! class: helper
 // x^n for a non-negative integer n known when the kernel is built, by
-// square-and-multiply: no pow(), no log/exp.
+// square-and-multiply: no power function, no log/exp.
 inline real ipow_real(real x, int n)
 {
     real acc = 1.0f;
@@ -98,7 +98,7 @@ inline vec3 bulb_power_int(vec3 z, int n, real* r_pow_n_minus_1)
     real r = v3_length(z);
     real rho = sqrt(z.x * z.x + z.y * z.y);
     real inv_r = 1.0f / fmax(r, K(1e-20f));
-    mask on_axis = rho < 1e-20f;  // atan2(0, 0) = 0: the azimuth is 0 there
+    mask on_axis = rho < 1e-20f;  // on the z axis the azimuth is 0, as in the trig formula
     real inv_rho = 1.0f / fmax(rho, K(1e-20f));
     real cos_nt, sin_nt, cos_nf, sin_nf;
     cpow_int(z.z * inv_r, rho * inv_r, n, &cos_nt, &sin_nt);
@@ -214,7 +214,7 @@ real scene_dist(vec3 p)
         real d3 = b2;
         if (M_ANY(b2 <= 0.27602237f))
         {
-            real d4 = de_mandelbulb_int(p, 8, 10, 2.0f, 1.1040895f, 0, v3_splat(0.0f));  // mandelbulb power=8 iterations=10 bailout=2  (mandelbulb.yaml:13)
+            real d4 = de_mandelbulb_int(p, 8, 10, 2.0f, 1.1040895f, 0, v3_splat(0.0f));  // mandelbulb power=8 iterations=10 bailout=2 method=0  (mandelbulb.yaml:13)
             d3 = SEL(d4, b2, b2 > 0.27602237f);
         }
         vec3 p5 = v3_sub(p, v3(0.0f, 0.0f, -1.3f));  // translate x=0 y=0 z=-1.3  (mandelbulb.yaml:16)
@@ -239,7 +239,7 @@ real scene_dist_mat(vec3 p, real* mat)
         real m5 = (real)(0.0f);
         if (M_ANY(b3 <= 0.27602237f))
         {
-            real d6 = de_mandelbulb_int(p, 8, 10, 2.0f, 1.1040895f, 0, v3_splat(0.0f));  // mandelbulb power=8 iterations=10 bailout=2  (mandelbulb.yaml:13)
+            real d6 = de_mandelbulb_int(p, 8, 10, 2.0f, 1.1040895f, 0, v3_splat(0.0f));  // mandelbulb power=8 iterations=10 bailout=2 method=0  (mandelbulb.yaml:13)
             d4 = SEL(d6, b3, b3 > 0.27602237f);
             m5 = SEL((real)(1.0f), (real)(0.0f), b3 > 0.27602237f);
         }

@@ -11,6 +11,7 @@
 
 #include "code_writer.hpp"
 #include "prelude.hpp"
+#include "gradient_emitter.hpp"
 #include "scene_emitter.hpp"
 #include "sdfc/codegen/stdlib_manifest.hpp"
 #include "sdfc/ir/printer.hpp"
@@ -78,12 +79,20 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
   w.line("// shading runs once per packet with a hit, never inside the march");
   w.line("vec3 pos = v3_mad(ro, rd, t);");
   w.line("real h = fmax(pixel_angle * t * 0.5f, K(1e-6f));  // finite-difference step: half a pixel footprint");
-  const char* normal_fn = s.normals == ir::NormalMethod::Central ? "normal_central" : "normal_tetrahedral";
-  used.insert(normal_fn);
-  w.line(fmt::format("vec3 n = {}(pos, h);", normal_fn));
+  if (s.normals == ir::NormalMethod::Dual) {
+    w.line("vec3 n = scene_normal_dual(pos);  // exact gradient by forward-mode differentiation");
+    w.line("(void)h;");
+  } else {
+    const char* normal_fn = s.normals == ir::NormalMethod::Central ? "normal_central" : "normal_tetrahedral";
+    used.insert(normal_fn);
+    w.line(fmt::format("vec3 n = {}(pos, h);", normal_fn));
+  }
   w.line("real mat;");
   w.line("(void)scene_dist_mat(pos, &mat);");
-  w.line("vec3 lit = shade_surface(pos, n, v3_scale(rd, -1.0f), mat);");
+  bool traps = false;
+  for (const auto& md : m.plan.materials) traps = traps || !md.trap_palette.empty();
+  if (traps) w.line("real trap = scene_trap(pos);  // orbit-trap colour, once per hit");
+  w.line(std::string("vec3 lit = shade_surface(pos, n, v3_scale(rd, -1.0f), mat") + (traps ? ", trap" : "") + ");");
   w.line("color = v3_select(color, lit, hit);");
   w.close("}");
   w.line(fmt::format("color = shade_encode(color, {});", lit.real(1.0 / s.gamma)));
@@ -125,6 +134,7 @@ EmittedKernel emit_opencl(const ir::Module& m, const EmitOptions& opt) {
   Literals lit(m.plan.march.precision);
   std::set<std::string> used;
   std::string scene = detail::emit_scene_functions(m, lit, used);
+  if (m.plan.march.normals == ir::NormalMethod::Dual) scene += "\n" + detail::emit_scene_gradient(m, lit, used);
   std::string shading = detail::emit_shading(m.plan, lit, used);
   std::string kernel = render_kernel(m, lit, used);
   if (opt.probe_kernel) kernel += "\n" + probe_kernel();

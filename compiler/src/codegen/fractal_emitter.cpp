@@ -83,8 +83,13 @@ std::string emit_fractal(const ir::Node& n, const std::string& p, const Literals
   switch (n.kind) {
     case Kind::Mandelbulb: {
       std::string radius = lit.real(ir::mandelbulb_set_radius(q[0]));
-      if (integer_power(q[0]))  // trig-free: the angles' multiples come from complex powers
-        return fmt::format("{}({}, {}, {}, {}, {}, 0, v3_splat(0.0f))", call("de_mandelbulb_int"), p, int(q[0]),
+      int ipower = integer_power(q[0]) ? int(q[0]) : 0;  // > 0: the trig-free power
+      auto method = ir::DeMethod(int(q[3]));
+      if (method != ir::DeMethod::Analytic)
+        return fmt::format("{}({}, {}, {}, {}, {}, {}, {})  /* de: {} */", call("de_mandelbulb_numeric"), p, r(0),
+                           ipower, int(q[1]), r(2), radius, int(q[3]), ir::de_method_name(method));
+      if (ipower)  // trig-free: the angles' multiples come from complex powers
+        return fmt::format("{}({}, {}, {}, {}, {}, 0, v3_splat(0.0f))", call("de_mandelbulb_int"), p, ipower,
                            int(q[1]), r(2), radius);
       return fmt::format("{}({}, {}, {}, {}, {})", call("de_mandelbulb"), p, r(0), int(q[1]), r(2), radius);
     }
@@ -98,7 +103,8 @@ std::string emit_fractal(const ir::Node& n, const std::string& p, const Literals
       return fmt::format("{}({}, {}, {}, {}, {}, {})", call("de_juliabulb"), p, r(0), int(q[1]), r(2), radius, c);
     }
     case Kind::Mandelbox:
-      return fmt::format("{}({}, {}, {}, {}, {}, {}, {}, {}, {})", call("de_mandelbox"), p, r(0),
+      return fmt::format("{}({}, {}, {}, {}, {}, {}, {}, {}, {})",
+                         call(ir::DeMethod(int(q[12])) == ir::DeMethod::Jacobian ? "de_mandelbox_jacobian" : "de_mandelbox"), p, r(0),
                          lit.real(q[1] * q[1]), lit.real(q[2] * q[2]), r(3), int(q[4]), int(q[5]),
                          lit.vec3({q[6], q[7], q[8]}), lit.vec3({q[9], q[10], q[11]}));
     case Kind::QuaternionJulia: {
@@ -116,6 +122,30 @@ std::string emit_fractal(const ir::Node& n, const std::string& p, const Literals
                          row(18), row(21));
     }
     case Kind::Hybrid: return hybrid(n, p, lit, w, used);
+    default: return "";
+  }
+}
+
+std::string emit_fractal_trap(const ir::Node& n, const std::string& p, const Literals& lit, std::set<std::string>& used) {
+  const auto& q = n.params;
+  auto r = [&](size_t i) { return lit.real(q[i]); };
+  auto call = [&](const char* fn) {
+    used.insert(fn);
+    return std::string(fn);
+  };
+  switch (n.kind) {
+    case Kind::Mandelbulb:
+      return fmt::format("{}({}, {}, {}, {}, 0, v3_splat(0.0f))", call("trap_mandelbulb"), p, r(0), int(q[1]), r(2));
+    case Kind::Juliabulb:
+      return fmt::format("{}({}, {}, {}, {}, 1, {})", call("trap_mandelbulb"), p, r(0), int(q[1]), r(2),
+                         lit.vec3({q[3], q[4], q[5]}));
+    case Kind::Mandelbox:
+      return fmt::format("{}({}, {}, {}, {}, {}, {}, {}, {}, {})", call("trap_mandelbox"), p, r(0), lit.real(q[1] * q[1]),
+                         lit.real(q[2] * q[2]), r(3), int(q[4]), int(q[5]), lit.vec3({q[6], q[7], q[8]}),
+                         lit.vec3({q[9], q[10], q[11]}));
+    case Kind::QuaternionJulia:
+      return fmt::format("{}({}, {}, {}, {}, {}, {}, {})", call("trap_quaternion_julia"), p, r(6), r(0),
+                         lit.vec3({q[1], q[2], q[3]}), int(q[4]), int(q[5]), r(7));
     default: return "";
   }
 }

@@ -17,4 +17,8 @@ bool is_fractal(const ir::Node& n);
 std::string emit_fractal(const ir::Node& n, const std::string& p, const Literals& lit, CodeWriter& w,
                          std::set<std::string>& used);
 
+// The orbit-trap value of the node at `p` (evaluated once per hit), or ""
+// for kinds without one (the fold fractals, the hybrid).
+std::string emit_fractal_trap(const ir::Node& n, const std::string& p, const Literals& lit, std::set<std::string>& used);
+
 }  // namespace sdfc::codegen::detail

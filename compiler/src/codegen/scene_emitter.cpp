@@ -26,13 +26,21 @@ struct Value {
 
 class SceneEmitter {
  public:
-  SceneEmitter(const ir::Module& m, const Literals& lit, bool with_mat, std::set<std::string>& used)
-      : g_(*m.graph), lit_(lit), with_mat_(with_mat), used_(used), file_(m.source_name) {}
+  // trap: emit scene_trap instead, where the tracked value is the orbit
+  // trap of the nearest fractal (chosen by the same rules as the material).
+  SceneEmitter(const ir::Module& m, const Literals& lit, bool with_mat, std::set<std::string>& used, bool trap = false)
+      : g_(*m.graph), lit_(lit), with_mat_(with_mat || trap), trap_(trap), used_(used), file_(m.source_name) {}
 
   std::string function(NodeId root) {
-    w_.line(with_mat_ ? "real scene_dist_mat(vec3 p, real* mat)" : "real scene_dist(vec3 p)");
+    w_.line(trap_ ? "real scene_trap(vec3 p)" : with_mat_ ? "real scene_dist_mat(vec3 p, real* mat)" : "real scene_dist(vec3 p)");
     w_.open("{");
     Value v = emit(root, "p");
+    if (trap_) {
+      w_.line("(void)" + v.d + ";");
+      w_.line("return " + v.mat + ";");
+      w_.close("}");
+      return w_.take();
+    }
     if (with_mat_) w_.line("*mat = " + v.mat + ";");
     w_.line("return " + v.d + ";");
     w_.close("}");
@@ -130,6 +138,12 @@ class SceneEmitter {
         w_.line(fmt::format("real {} = {} * {};  // undo the scale on the distance", d, c.d, r(0)));
         return {d, c.mat};
       }
+      case Kind::StepFactor: {
+        Value c = emit(n.children[0], p);
+        std::string d = var("d");
+        w_.line(fmt::format("real {} = {} * {};  // {}", d, c.d, r(0), describe(n)));
+        return {d, c.mat};
+      }
       case Kind::Bounded: {
         // Skip the subtree while every lane is farther from its box than the
         // margin: the box distance is a lower bound of the subtree's.
@@ -150,7 +164,7 @@ class SceneEmitter {
       }
       case Kind::Material: {
         Value c = emit(n.children[0], p);
-        if (!with_mat_) return c;
+        if (!with_mat_ || trap_) return c;
         std::string id = lit_.typed(q[0]);
         // The material nearest the geometry wins: only unassigned (0) parts take this one.
         if (c.mat == lit_.typed(0)) return {c.d, id};
@@ -226,7 +240,13 @@ class SceneEmitter {
         if (auto e = catalogue_call(n, p, lit_, used_)) return leaf(n, *e);
         if (is_fractal(n)) {
           std::string expr = emit_fractal(n, p, lit_, w_, used_);
-          return leaf(n, expr);
+          Value v = leaf(n, expr);
+          std::string trap = trap_ ? emit_fractal_trap(n, p, lit_, used_) : "";
+          if (!trap.empty()) {
+            v.mat = var("trap");
+            w_.line(fmt::format("real {} = {};  // orbit trap", v.mat, trap));
+          }
+          return v;
         }
         return combine(n, p);
     }
@@ -351,6 +371,7 @@ class SceneEmitter {
   const ir::Graph& g_;
   const Literals& lit_;
   bool with_mat_;
+  bool trap_;
   std::set<std::string>& used_;
   std::string file_;
   CodeWriter w_;
@@ -364,6 +385,12 @@ std::string emit_scene_functions(const ir::Module& m, const Literals& lit, std::
   out += SceneEmitter(m, lit, false, used).function(m.root);
   out += "\n// ---- scene distance with material: evaluated once per hit ----\n";
   out += SceneEmitter(m, lit, true, used).function(m.root);
+  bool traps = false;
+  for (const auto& md : m.plan.materials) traps = traps || !md.trap_palette.empty();
+  if (traps) {
+    out += "\n// ---- orbit trap of the nearest fractal: evaluated once per hit, for orbit-trap materials ----\n";
+    out += SceneEmitter(m, lit, false, used, true).function(m.root);
+  }
   return out;
 }
 

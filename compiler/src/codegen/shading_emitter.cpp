@@ -14,14 +14,31 @@ std::string where(const SourceLoc& loc) {
   return fmt::format("{}:{}", f, loc.line);
 }
 
+// Orbit-trap colour: the trap (smallest |z| of the orbit) clamped to [0, 1]
+// walks the palette piecewise linearly; the result is mixed into the albedo.
+void emit_trap_palette(CodeWriter& w, const Literals& lit, const ir::MaterialDef& md, size_t i) {
+  const auto& pal = md.trap_palette;
+  w.open("{");
+  w.line(fmt::format("real x = clamp(trap, K(0.0f), K(1.0f)) * {};  // orbit trap -> palette position", lit.real(double(pal.size() - 1))));
+  w.line(fmt::format("vec3 pal = {};", lit.vec3(pal[0])));
+  for (size_t k = 0; k + 1 < pal.size(); ++k)
+    w.line(fmt::format("pal = v3_select(pal, v3_mix({}, {}, x - {}), x >= {});", lit.vec3(pal[k]), lit.vec3(pal[k + 1]),
+                       lit.real(double(k)), lit.real(double(k))));
+  w.line(fmt::format("*albedo = v3_select(*albedo, v3_mix(*albedo, pal, {}), is{});", lit.typed(md.trap_mix), i));
+  w.close("}");
+}
+
 }  // namespace
 
 std::string emit_shading(const ir::RenderPlan& plan, const Literals& lit, std::set<std::string>& used) {
   CodeWriter w;
-  w.line("// ---- materials: id -> albedo, specular, shininess ----");
-  w.line("void material_of(real id, vec3* albedo, real* specular, real* shininess)");
-  w.open("{");
   const auto& mats = plan.materials;
+  bool traps = false;  // any orbit-trap material: the trap value comes along
+  for (const auto& md : mats) traps = traps || !md.trap_palette.empty();
+  std::string trap_param = traps ? ", real trap" : "";
+  w.line("// ---- materials: id -> albedo, specular, shininess ----");
+  w.line("void material_of(real id, vec3* albedo, real* specular, real* shininess" + trap_param + ")");
+  w.open("{");
   w.line(fmt::format("*albedo = {};  // material 0 '{}'", lit.vec3(mats[0].color), mats[0].name));
   w.line(fmt::format("*specular = {};", lit.typed(mats[0].specular)));
   w.line(fmt::format("*shininess = {};", lit.typed(mats[0].shininess)));
@@ -33,16 +50,17 @@ std::string emit_shading(const ir::RenderPlan& plan, const Literals& lit, std::s
     w.line(fmt::format("*albedo = v3_select(*albedo, {}, is{});", lit.vec3(md.color), i));
     w.line(fmt::format("*specular = SEL(*specular, {}, is{});", lit.typed(md.specular), i));
     w.line(fmt::format("*shininess = SEL(*shininess, {}, is{});", lit.typed(md.shininess), i));
+    if (!md.trap_palette.empty()) emit_trap_palette(w, lit, md, i);
   }
   w.close("}");
   w.blank();
 
   w.line("// ---- lighting: v points from the surface to the eye ----");
-  w.line("vec3 shade_surface(vec3 p, vec3 n, vec3 v, real mat)");
+  w.line("vec3 shade_surface(vec3 p, vec3 n, vec3 v, real mat" + trap_param + ")");
   w.open("{");
   w.line("vec3 albedo;");
   w.line("real specular, shininess;");
-  w.line("material_of(mat, &albedo, &specular, &shininess);");
+  w.line(std::string("material_of(mat, &albedo, &specular, &shininess") + (traps ? ", trap" : "") + ");");
   ir::Vec3d ambient{0, 0, 0};
   for (const auto& l : plan.lights)
     if (l.kind == ir::LightKind::Ambient)

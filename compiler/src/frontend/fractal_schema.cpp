@@ -47,12 +47,39 @@ std::pair<double, double> mandelbox_radii(MapReader& m, const std::string& what,
   return {min_r, fixed_r};
 }
 
+// `de: METHOD`, one of `methods` (the node's own); the error names them.
+// `dual` is another name for `jacobian` (forward-mode dual numbers).
+double de_method(ValueReader& r, const MapReader& m, std::string_view what,
+                 std::initializer_list<ir::DeMethod> methods) {
+  const SourceValue* v = m.get("de");
+  if (!v) return double(ir::DeMethod::Analytic);
+  std::vector<std::string_view> names;
+  for (auto x : methods) names.push_back(ir::de_method_name(x));
+  if (v->is_scalar() && !v->quoted) {
+    std::string word = v->scalar == "dual" ? "jacobian" : v->scalar;
+    for (auto x : methods)
+      if (word == ir::de_method_name(x)) return double(x);
+  }
+  std::string list;
+  for (auto n : names) list += (list.empty() ? "" : ", ") + std::string(n);
+  std::string hint = v->is_scalar() ? did_you_mean(v->scalar, names) : "";
+  r.sink().error(v->loc, fmt::format("{}.de: '{}' is not a distance-estimation method of {}; it has: {}", what,
+                                     v->is_scalar() ? v->scalar : v->kind_name(), what, list),
+                 hint);
+  return double(ir::DeMethod::Analytic);
+}
+
 NodeId mandelbulb(ValueReader& r, ir::Builder& b, const SourceValue& body, const SourceLoc& at) {
-  MapReader m(r, body, "mandelbulb", {"power", "iterations", "bailout", "julia"});
+  MapReader m(r, body, "mandelbulb", {"power", "iterations", "bailout", "julia", "de"});
   double power = m.number("power", 8.0, Range::closed(1, 64));
   int iterations = m.integer("iterations", 10, 1, 1000);
   double bailout = m.number("bailout", 2.0, {0, 1e3, true});
-  if (!m.get("julia")) return b.make(Kind::Mandelbulb, {power, double(iterations), bailout}, {}, at);
+  if (!m.get("julia")) {
+    double method = de_method(r, m, "mandelbulb", {ir::DeMethod::Analytic, ir::DeMethod::Gradient,
+                                                   ir::DeMethod::Potential, ir::DeMethod::SinhPotential});
+    return b.make(Kind::Mandelbulb, {power, double(iterations), bailout, method}, {}, at);
+  }
+  de_method(r, m, "mandelbulb with julia", {ir::DeMethod::Analytic});
   if (power < 2) {
     r.sink().error(m.get("power") ? m.get("power")->loc : at, fmt::format("mandelbulb.power: a Juliabulb needs power >= 2, got {}", power), "");
     return ir::kNoNode;
@@ -63,7 +90,8 @@ NodeId mandelbulb(ValueReader& r, ir::Builder& b, const SourceValue& body, const
 
 NodeId mandelbox(ValueReader& r, ir::Builder& b, const SourceValue& body, const SourceLoc& at) {
   std::string what = "mandelbox";
-  MapReader m(r, body, what, {"scale", "min_radius", "fixed_radius", "folding_limit", "iterations", "julia", "scale_xyz"});
+  MapReader m(r, body, what, {"scale", "min_radius", "fixed_radius", "folding_limit", "iterations", "julia", "scale_xyz", "de"});
+  double method = de_method(r, m, what, {ir::DeMethod::Analytic, ir::DeMethod::Jacobian});
   double scale = mandelbox_scale(m, what, r);
   auto [min_r, fixed_r] = mandelbox_radii(m, what, r);
   double fl = m.number("folding_limit", 1.0, Range::positive(100));
@@ -79,11 +107,12 @@ NodeId mandelbox(ValueReader& r, ir::Builder& b, const SourceValue& body, const 
     s = {1, 1, 1};
   }
   return b.make(Kind::Mandelbox, {scale, min_r, fixed_r, fl, double(iterations), julia ? 1.0 : 0.0, c[0], c[1], c[2],
-                                  s[0], s[1], s[2]}, {}, at);
+                                  s[0], s[1], s[2], method}, {}, at);
 }
 
 NodeId julia(ValueReader& r, ir::Builder& b, const SourceValue& body, const SourceLoc& at) {
-  MapReader m(r, body, "julia", {"c", "degree", "iterations", "slice", "bailout"});
+  MapReader m(r, body, "julia", {"c", "degree", "iterations", "slice", "bailout", "de"});
+  de_method(r, m, "julia", {ir::DeMethod::Analytic});
   std::vector<double> c = {-0.2, 0.6, 0.2, 0.2};
   if (const SourceValue* cv = m.get("c")) c = r.vecn(*cv, "julia.c", 4, Range::closed(-4, 4));
   int degree = m.integer("degree", 2, 2, 3);
@@ -94,14 +123,16 @@ NodeId julia(ValueReader& r, ir::Builder& b, const SourceValue& body, const Sour
 }
 
 NodeId menger(ValueReader& r, ir::Builder& b, const SourceValue& body, const SourceLoc& at) {
-  MapReader m(r, body, "menger", {"iterations", "scale"});
+  MapReader m(r, body, "menger", {"iterations", "scale", "de"});
+  de_method(r, m, "menger", {ir::DeMethod::Analytic});
   int iterations = m.integer("iterations", 4, 1, 12);
   double scale = m.number("scale", 3.0, Range::closed(2, 4));
   return b.make(Kind::Menger, {double(iterations), scale}, {}, at);
 }
 
 NodeId sierpinski(ValueReader& r, ir::Builder& b, const SourceValue& body, const SourceLoc& at) {
-  MapReader m(r, body, "sierpinski", {"iterations", "scale"});
+  MapReader m(r, body, "sierpinski", {"iterations", "scale", "de"});
+  de_method(r, m, "sierpinski", {ir::DeMethod::Analytic});
   int iterations = m.integer("iterations", 8, 1, 30);
   double scale = m.number("scale", 2.0, {1, 4, true});
   return b.make(Kind::Sierpinski, {double(iterations), scale}, {}, at);
@@ -117,7 +148,8 @@ std::array<double, 9> rotation(ValueReader& r, const MapReader& m, std::string_v
 }
 
 NodeId kifs(ValueReader& r, ir::Builder& b, const SourceValue& body, const SourceLoc& at) {
-  MapReader m(r, body, "kifs", {"symmetry", "scale", "offset", "rotate_before", "rotate_after", "iterations"});
+  MapReader m(r, body, "kifs", {"symmetry", "scale", "offset", "rotate_before", "rotate_after", "iterations", "de"});
+  de_method(r, m, "kifs", {ir::DeMethod::Analytic});
   std::string sym = m.word("symmetry", "tetrahedral", {"tetrahedral", "octahedral", "icosahedral", "menger"});
   double code = sym == "tetrahedral" ? 0 : sym == "octahedral" ? 1 : sym == "icosahedral" ? 2 : 3;
   double scale = m.number("scale", 2.0, {1, 4, true});
@@ -162,7 +194,8 @@ bool hybrid_step(ValueReader& r, const SourceValue& v, std::vector<double>& out)
 }
 
 NodeId hybrid(ValueReader& r, ir::Builder& b, const SourceValue& body, const SourceLoc& at) {
-  MapReader m(r, body, "hybrid", {"steps", "repeat", "iterations", "bailout"});
+  MapReader m(r, body, "hybrid", {"steps", "repeat", "iterations", "bailout", "de"});
+  de_method(r, m, "hybrid", {ir::DeMethod::Analytic});
   const SourceValue* steps = m.require("steps");
   int iterations = m.integer("iterations", 12, 1, 200);
   double bailout = m.number("bailout", 10.0, {1, 1e3, true});

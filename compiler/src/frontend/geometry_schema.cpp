@@ -33,7 +33,7 @@ const std::vector<std::string_view>& geometry_kinds() {
 const std::vector<std::string_view>& geometry_modifiers() {
   static const std::vector<std::string_view> k = [] {
     std::vector<std::string_view> v = domain_modifiers();
-    v.insert(v.end(), {"scale", "rotate", "translate", "material"});
+    v.insert(v.end(), {"scale", "rotate", "translate", "material", "step_factor"});
     return v;
   }();
   return k;
@@ -224,6 +224,11 @@ NodeId GeometryLowering::apply_modifiers(const SourceValue& node, NodeId n) {
   if (const SourceValue* t = node.find("translate")) {
     Vec3d v = r_.vec3(*t, "translate");
     n = b_.make(Kind::Translate, {v[0], v[1], v[2]}, {n}, t->loc);
+  }
+  if (const SourceValue* f = node.find("step_factor")) {
+    // The fudge factor, local to this node: its distance times f.
+    double factor = r_.number(*f, "step_factor", {0, 2, true});
+    n = b_.make(Kind::StepFactor, {factor}, {n}, f->loc);
   }
   if (const SourceValue* mat = node.find("material")) {
     if (!mat->is_scalar()) {

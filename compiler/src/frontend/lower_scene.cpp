@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "sdfc/frontend/geometry_schema.hpp"
+#include "sdfc/ir/dual_normals.hpp"
 #include "sdfc/frontend/value_reader.hpp"
 
 namespace sdfc {
@@ -52,8 +53,10 @@ void read_render(ValueReader& r, const SourceValue& v, ir::MarchSettings& s) {
   s.step_factor = m.number("step_factor", s.step_factor, {0, 2, true});
   s.lipschitz_correction = m.word("lipschitz_correction", "true", {"true", "false"}) == "true";
   s.gamma = m.number("gamma", s.gamma, {0, 10, true});
-  s.normals = m.word("normals", "tetrahedral", {"tetrahedral", "central"}) == "central" ? ir::NormalMethod::Central
-                                                                                         : ir::NormalMethod::Tetrahedral;
+  std::string normals = m.word("normals", "tetrahedral", {"tetrahedral", "central", "dual"});
+  s.normals = normals == "central" ? ir::NormalMethod::Central
+              : normals == "dual"  ? ir::NormalMethod::Dual
+                                   : ir::NormalMethod::Tetrahedral;
 }
 
 void read_background(ValueReader& r, const SourceValue& v, ir::Background& bg) {
@@ -108,6 +111,20 @@ void read_lights(ValueReader& r, const SourceValue& v, ir::RenderPlan& plan) {
   }
 }
 
+// orbit_trap: {palette: [[r, g, b], ...], mix: 0.7}: 2 to 16 colours.
+void read_orbit_trap(ValueReader& r, const SourceValue& v, ir::MaterialDef& md) {
+  std::string what = "material '" + md.name + "'.orbit_trap";
+  MapReader m(r, v, what, {"palette", "mix"});
+  md.trap_mix = m.number("mix", 0.7, Range::closed(0, 1));
+  const SourceValue* p = m.require("palette");
+  if (!p) return;
+  if (!p->is_seq() || p->items.size() < 2 || p->items.size() > 16) {
+    r.sink().error(p->loc, what + ".palette: expected a list of 2 to 16 colours [r, g, b]", "");
+    return;
+  }
+  for (const auto& c : p->items) md.trap_palette.push_back(r.vec3(c, what + ".palette", Range::closed(0, 1)));
+}
+
 void read_materials(ValueReader& r, const SourceValue& v, ir::RenderPlan& plan) {
   if (!v.is_map()) {
     r.sink().error(v.loc, "materials: expected a map from names to materials, e.g. 'bone: {color: [0.9, 0.85, 0.75]}'", "");
@@ -121,10 +138,11 @@ void read_materials(ValueReader& r, const SourceValue& v, ir::RenderPlan& plan) 
       r.sink().error(key.loc, "'default' is the built-in material's name", "choose another name");
       continue;
     }
-    MapReader m(r, body, "material '" + md.name + "'", {"color", "specular", "shininess"});
+    MapReader m(r, body, "material '" + md.name + "'", {"color", "specular", "shininess", "orbit_trap"});
     md.color = m.vec3("color", md.color, Range::closed(0, 1));
     md.specular = m.number("specular", md.specular, Range::closed(0, 100));
     md.shininess = m.number("shininess", md.shininess, Range::closed(1, 10000));
+    if (const SourceValue* t = m.get("orbit_trap")) read_orbit_trap(r, *t, md);
     plan.materials.push_back(md);
   }
 }
@@ -143,6 +161,22 @@ void add_default_ambient(ir::RenderPlan& plan) {
 
 }  // namespace
 
+// render.normals: dual needs every node to carry an exact gradient; name the
+// first that cannot, at the `normals` setting.
+void check_dual_normals(ValueReader& r, const MapReader& top, const ir::Graph& g, ir::NodeId root) {
+  for (ir::NodeId id : g.postorder(root)) {
+    const ir::Node& n = g.node(id);
+    if (ir::supports_dual_normals(n.kind)) continue;
+    const SourceValue* at = top.get("render")->find("normals");
+    r.sink().error(at->loc,
+                   fmt::format("render.normals: dual needs dual-number derivatives, which '{}' (line {}) does not have; "
+                               "they exist for {}",
+                               ir::info(n.kind).name, n.loc.line, ir::dual_normal_kinds()),
+                   "use 'normals: tetrahedral' or 'normals: central' for this scene");
+    return;
+  }
+}
+
 ir::Module lower_scene(const SourceValue& doc, const std::string& source_name) {
   DiagnosticSink sink;
   ValueReader r(sink);
@@ -155,7 +189,9 @@ ir::Module lower_scene(const SourceValue& doc, const std::string& source_name) {
   MapReader top(r, doc, "the scene file", {"camera", "render", "background", "lights", "materials", "scene"});
 
   ir::RenderPlan& plan = m.plan;
-  plan.materials.push_back({"default", {0.8, 0.8, 0.8}, 0.2, 32, {}});
+  ir::MaterialDef builtin;  // the default material: the MaterialDef defaults
+  builtin.name = "default";
+  plan.materials.push_back(builtin);
   if (auto* v = top.get("camera")) read_camera(r, *v, plan.camera);
   if (auto* v = top.get("render")) read_render(r, *v, plan.march);
   if (auto* v = top.get("background")) read_background(r, *v, plan.background);
@@ -173,6 +209,7 @@ ir::Module lower_scene(const SourceValue& doc, const std::string& source_name) {
   if (const SourceValue* scene = top.require("scene")) {
     frontend::GeometryLowering g(r, b, plan);
     m.root = g.lower(*scene);
+    if (m.root != ir::kNoNode && plan.march.normals == ir::NormalMethod::Dual) check_dual_normals(r, top, *m.graph, m.root);
   }
   sink.throw_if_any();
   return m;

@@ -62,7 +62,7 @@ std::string print_plan(const RenderPlan& p) {
   out += fmt::format("render {}x{} precision={} max_steps={} hit_epsilon={} max_distance={} step_factor={} gamma={} normals={}\n",
                      r.width, r.height, r.precision == Precision::Float ? "float" : "double", r.max_steps,
                      num(r.hit_epsilon), num(r.max_distance), num(r.step_factor), num(r.gamma),
-                     r.normals == NormalMethod::Tetrahedral ? "tetrahedral" : "central");
+                     r.normals == NormalMethod::Tetrahedral ? "tetrahedral" : r.normals == NormalMethod::Central ? "central" : "dual");
   out += fmt::format("background top={} bottom={}\n", vec(p.background.top), vec(p.background.bottom));
   for (size_t i = 0; i < p.lights.size(); ++i) {
     const Light& l = p.lights[i];

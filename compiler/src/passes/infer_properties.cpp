@@ -71,9 +71,16 @@ ir::Props infer(const ir::Graph& g, const ir::Node& n) {
     }
     case Kind::Mandelbulb:
       // The estimator is a bound in practice but not provably; L = 1 assumed.
+      // The numeric methods run the orbit four times.
       p.bounds = Box3::cube(ir::mandelbulb_set_radius(q[0]));
       p.cls = DistanceClass::Estimate;
-      p.cost = 10 + q[1] * 45;
+      p.cost = (10 + q[1] * 45) * (q[3] == 0 ? 1 : 4);
+      break;
+    case Kind::StepFactor:
+      // A factor <= 1 keeps a bound a bound; above 1 nothing is promised.
+      p = kid(0);
+      if (q[0] > 1) p.cls = worse(p.cls, DistanceClass::Estimate);
+      p.cost += 1;
       break;
     // Fractals of issue 3: estimates (a bound in practice, not provably);
     // bounds from fractal_math.hpp, cost per iteration from the loop body.
@@ -87,7 +94,7 @@ ir::Props infer(const ir::Graph& g, const ir::Node& n) {
       double cn = std::sqrt(q[6] * q[6] + q[7] * q[7] + q[8] * q[8]);
       p.bounds = Box3::cube(ir::mandelbox_half_extent(smallest, q[3], cn, q[5] != 0));
       p.cls = DistanceClass::Estimate;
-      p.cost = 8 + q[4] * 25;
+      p.cost = 8 + q[4] * (q[12] == 0 ? 25 : 70);
       break;
     }
     case Kind::QuaternionJulia:

@@ -108,9 +108,16 @@ Sample evaluate_node(const ir::Graph& g, ir::NodeId id, const Vec3& p) {
       double h = bb > 0 ? std::clamp((pa[0] * ba[0] + pa[1] * ba[1] + pa[2] * ba[2]) / bb, 0.0, 1.0) : 0.0;
       return {len(pa[0] - ba[0] * h, pa[1] - ba[1] * h, pa[2] - ba[2] * h) - q[6], 0};
     }
-    case Kind::Mandelbulb: return {mandelbulb(p, q[0], int(q[1]), q[2]), 0};
+    case Kind::Mandelbulb:
+      if (q[3] != 0) return {fractals::mandelbulb_numeric(p, q), 0};
+      return {mandelbulb(p, q[0], int(q[1]), q[2]), 0};
+    case Kind::StepFactor: {
+      Sample s = evaluate(g, n.children[0], p);
+      return {s.distance * q[0], s.material};
+    }
     case Kind::Juliabulb: return {fractals::juliabulb(p, q), 0};
-    case Kind::Mandelbox: return {fractals::mandelbox(p, q), 0};
+    case Kind::Mandelbox:
+      return {q[12] != 0 ? fractals::mandelbox_jacobian(p, q) : fractals::mandelbox(p, q), 0};
     case Kind::QuaternionJulia: return {fractals::quaternion_julia(p, q), 0};
     case Kind::Menger: return {fractals::menger(p, q), 0};
     case Kind::Sierpinski: return {fractals::sierpinski(p, q), 0};

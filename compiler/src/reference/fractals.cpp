@@ -104,6 +104,93 @@ double mandelbox(const Vec3& p, const std::vector<double>& q) {
   return len(z) / std::fabs(dr);
 }
 
+double mandelbox_jacobian(const Vec3& p, const std::vector<double>& q) {
+  using M3 = std::array<double, 9>;  // row-major: J[i][j] = d z_i / d p_j
+  auto matmul = [](const M3& a, const M3& b) {
+    M3 r{};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        for (int k = 0; k < 3; ++k) r[i * 3 + j] += a[i * 3 + k] * b[k * 3 + j];
+    return r;
+  };
+  double scale = q[0], fl = q[3], min2 = q[1] * q[1], fixed2 = q[2] * q[2];
+  int iterations = int(q[4]);
+  bool julia = q[5] != 0;
+  Vec3 c = julia ? Vec3{q[6], q[7], q[8]} : p, z = p;
+  M3 J{1, 0, 0, 0, 1, 0, 0, 0, 1};
+  for (int i = 0; i < iterations && dot(z, z) < 1e4; ++i) {
+    // Each step's own Jacobian, multiplied onto the running one.
+    M3 box{1, 0, 0, 0, 1, 0, 0, 0, 1};
+    for (int k = 0; k < 3; ++k) {
+      if (z[k] > fl) z[k] = 2 * fl - z[k], box[k * 4] = -1;
+      else if (z[k] < -fl) z[k] = -2 * fl - z[k], box[k * 4] = -1;
+    }
+    J = matmul(box, J);
+    double r2 = dot(z, z);
+    M3 sphere{1, 0, 0, 0, 1, 0, 0, 0, 1};
+    if (r2 < min2) {
+      for (int k = 0; k < 3; ++k) sphere[k * 4] = fixed2 / min2;
+      for (double& v : z) v *= fixed2 / min2;
+    } else if (r2 < fixed2) {
+      double f = fixed2 / r2;  // d/dz (f2 z / |z|^2) = f (I - 2 z z^T / r2)
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) sphere[a * 3 + b] = f * ((a == b ? 1 : 0) - 2 * z[a] * z[b] / r2);
+      for (double& v : z) v *= f;
+    }
+    J = matmul(sphere, J);
+    for (int a = 0; a < 3; ++a) {
+      double m = scale * q[9 + a];
+      z[a] = m * z[a] + c[a];
+      for (int b = 0; b < 3; ++b) J[a * 3 + b] = m * J[a * 3 + b] + (!julia && a == b ? 1 : 0);
+    }
+  }
+  // grad |z| = J^T z / |z|; d = |z| / |grad |z||.
+  Vec3 g{};
+  for (int b = 0; b < 3; ++b)
+    for (int a = 0; a < 3; ++a) g[b] += J[a * 3 + b] * z[a];
+  return dot(z, z) / std::max(len(g), 1e-30);
+}
+
+double mandelbulb_numeric(const Vec3& p, const std::vector<double>& q) {
+  double power = q[0], bailout = q[2];
+  int iterations = int(q[1]);
+  auto method = ir::DeMethod(int(q[3]));
+  // |z| after passing the bailout, or after exactly `pin` steps.
+  auto orbit = [&](const Vec3& c, int pin, int* steps) {
+    Vec3 z = c;
+    int n = 0;
+    while (n < iterations && (pin >= 0 ? n < pin : len(z) < bailout)) {
+      double rp;
+      Vec3 zn = bulb_power(z, power, &rp);
+      for (int k = 0; k < 3; ++k) z[k] = zn[k] + c[k];
+      ++n;
+    }
+    *steps = n;
+    return len(z);
+  };
+  const double eps = 1e-4;
+  int n, nx, ny, nz;
+  double r = orbit(p, -1, &n);
+  int pin = method == ir::DeMethod::Gradient ? n : -1;
+  double rx = orbit({p[0] + eps, p[1], p[2]}, pin, &nx);
+  double ry = orbit({p[0], p[1] + eps, p[2]}, pin, &ny);
+  double rz = orbit({p[0], p[1], p[2] + eps}, pin, &nz);
+  double de;
+  if (method == ir::DeMethod::Gradient) {
+    double g = len({rx - r, ry - r, rz - r}) / eps;
+    de = 0.5 * r * std::log(std::max(r, 1e-20)) / std::max(g, 1e-20);
+  } else {
+    auto G = [&](double rr, int k) { return std::log(std::max(rr, 1e-20)) / std::pow(power, k); };
+    double g0 = G(r, n);
+    double g = std::max(len({G(rx, nx) - g0, G(ry, ny) - g0, G(rz, nz) - g0}) / eps, 1e-20);
+    de = method == ir::DeMethod::Potential ? 0.5 * g0 / g : 0.5 * std::sinh(g0) / (std::exp(g0) * g);
+  }
+  if (r < bailout) de = 0;  // never escaped: inside
+  double radius = ir::mandelbulb_set_radius(power);
+  double r0 = len(p);
+  return r0 > 1.5 * radius ? r0 - radius : de;
+}
+
 double quaternion_julia(const Vec3& p, const std::vector<double>& q) {
   Quat c{q[0], q[1], q[2], q[3]}, z{p[0], p[1], p[2], q[6]};
   int degree = int(q[4]), iterations = int(q[5]);

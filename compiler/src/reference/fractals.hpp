@@ -11,6 +11,10 @@ using Vec3 = std::array<double, 3>;
 
 double juliabulb(const Vec3& p, const std::vector<double>& q);
 double mandelbox(const Vec3& p, const std::vector<double>& q);
+// de: jacobian (a full 3x3 Jacobian matrix product) and the Mandelbulb's
+// gradient / potential / sinh estimators (four-point forward differences).
+double mandelbox_jacobian(const Vec3& p, const std::vector<double>& q);
+double mandelbulb_numeric(const Vec3& p, const std::vector<double>& q);
 double quaternion_julia(const Vec3& p, const std::vector<double>& q);
 double menger(const Vec3& p, const std::vector<double>& q);
 double sierpinski(const Vec3& p, const std::vector<double>& q);

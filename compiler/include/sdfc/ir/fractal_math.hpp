@@ -56,5 +56,17 @@ inline std::array<double, 9> axis_rotation(const std::array<double, 3>& a, doubl
 enum class KifsSymmetry { Tetrahedral = 0, Octahedral = 1, Icosahedral = 2, Menger = 3 };
 enum class HybridStep { Mandelbulb = 0, Mandelbox = 1 };
 inline constexpr int kHybridMaxSteps = 4;
+// Distance-estimation methods (`de:`), stored as a node's `method` parameter.
+enum class DeMethod { Analytic = 0, Jacobian = 1, Gradient = 2, Potential = 3, SinhPotential = 4 };
+inline const char* de_method_name(DeMethod m) {
+  switch (m) {
+    case DeMethod::Analytic: return "analytic";
+    case DeMethod::Jacobian: return "jacobian";
+    case DeMethod::Gradient: return "gradient";
+    case DeMethod::Potential: return "potential";
+    case DeMethod::SinhPotential: return "sinh";
+  }
+  return "analytic";
+}
 inline constexpr int kHybridStepParams = 6;  // kind, repeat, 4 parameters
 }  // namespace sdfc::ir

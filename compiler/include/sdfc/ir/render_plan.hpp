@@ -21,7 +21,7 @@ struct Camera {
 };
 
 enum class Precision { Float, Double };
-enum class NormalMethod { Tetrahedral, Central };
+enum class NormalMethod { Tetrahedral, Central, Dual };
 
 struct MarchSettings {
   int width = 1280;
@@ -57,6 +57,10 @@ struct MaterialDef {
   Vec3d color{0.8, 0.8, 0.8};
   double specular = 0.2;
   double shininess = 32;
+  // Orbit-trap colour (issue 3): at the hit, the fractal's orbit trap picks a
+  // colour from the palette, mixed into `color` by trap_mix. Empty: none.
+  std::vector<Vec3d> trap_palette;
+  double trap_mix = 0.0;
   SourceLoc loc;
 };
 

@@ -1,0 +1,113 @@
+// render.normals: dual against central differences on smooth primitives:
+// the forward-mode gradient and a fine 6-tap central difference of the same
+// kernel's scene_dist must agree within 0.5 degrees at surface points; and a
+// scene with a node that has no dual derivatives is a clear scene error.
+#include <gtest/gtest.h>
+
+#include <CL/cl.h>
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "sdfc/support/diagnostics.hpp"
+#include "sdfc_test_support.hpp"
+
+namespace sdfc {
+namespace {
+
+using test::V3;
+
+const char* kScene =
+    "render: {normals: dual}\n"
+    "scene:\n"
+    "  union:\n"
+    "    - {sphere: {radius: 0.8}}\n"
+    "    - {torus: {major_radius: 0.7, minor_radius: 0.2}, rotate: {axis: [1, 0.5, 0], degrees: 35}, translate: [3, 0, 0]}\n"
+    "    - {capsule: {a: [0, 0, -0.5], b: [0.3, 0.2, 0.6], radius: 0.3}, scale: 1.3, translate: [-3, 0, 0]}\n"
+    "    - {cylinder: {radius: 0.5, height: 1.2}, rotate: [20, 10, 0], translate: [0, 3, 0]}\n"
+    "    - {difference: [{sphere: {radius: 0.7}}, {sphere: {radius: 0.4}, translate: [0.6, 0, 0]}], translate: [0, -3, 0]}\n"
+    "    - {smooth_union: {radius: 0.3, children: [{sphere: {radius: 0.5}}, {box: {size: [0.6, 0.6, 1.4]}, translate: [0.5, 0, 0]}]},\n"
+    "       translate: [3, 3, 0]}\n"
+    "    - {smooth_difference: {radius: 0.2, children: [{box: {size: [1, 1, 1], radius: 0.1}}, {sphere: {radius: 0.5}, translate: [0.4, 0.4, 0.4]}]},\n"
+    "       translate: [-3, 3, 0]}\n"
+    "    - {smooth_intersection: {radius: 0.2, children: [{sphere: {radius: 0.6}}, {cylinder: {radius: 0.4, height: 2}}]}, translate: [-3, -3, 0]}\n";
+
+// The emitted kernel plus a probe that writes both normals per point.
+std::string normal_kernel(const ir::Module& m, int width) {
+  std::string src = codegen::emit_opencl(m, {width, false}).source;
+  return src + R"(
+__kernel void normal_probe(__global const float* px, __global const float* py, __global const float* pz,
+                           __global float* out)
+{
+    const int i = get_global_id(0) * SDFC_WIDTH;
+    vec3 p = v3(LOAD_REAL(px + i), LOAD_REAL(py + i), LOAD_REAL(pz + i));
+    vec3 nd = scene_normal_dual(p);
+    const scalar h = K(1e-3f);
+    vec3 nc = v3_normalize(v3(scene_dist(v3(p.x + h, p.y, p.z)) - scene_dist(v3(p.x - h, p.y, p.z)),
+                              scene_dist(v3(p.x, p.y + h, p.z)) - scene_dist(v3(p.x, p.y - h, p.z)),
+                              scene_dist(v3(p.x, p.y, p.z + h)) - scene_dist(v3(p.x, p.y, p.z - h))));
+    STORE_REAL(v3_dot(nd, nc), out + i);
+}
+)";
+}
+
+class DualNormals : public ::testing::TestWithParam<std::tuple<int, bool>> {};
+
+TEST_P(DualNormals, AgreeWithCentralDifferences) {
+  auto [width, dbl] = GetParam();
+  ir::Module m = test::compile_text(kScene, "dual.yaml", {std::string("render.precision=") + (dbl ? "double" : "float")});
+  std::mt19937_64 rng(11);
+  auto f = [&](const V3& p) { return reference::distance(m, p); };
+  std::vector<V3> pts = test::surface_points(f, {-4, -4, -1.5}, {4, 4, 1.5}, 400, rng);
+  ASSERT_GE(pts.size(), 300u);
+  auto program = sdfrt::build_program(test::device(), normal_kernel(m, width), "");
+  auto kernel = program.kernel("normal_probe");
+  size_t n = (pts.size() + width - 1) / width * width;
+  std::vector<float> x(n, 5), y(n, 5), z(n, 5), out(n, 0);
+  for (size_t i = 0; i < pts.size(); ++i) x[i] = float(pts[i][0]), y[i] = float(pts[i][1]), z[i] = float(pts[i][2]);
+  cl_context ctx = test::device().context();
+  cl_int err = CL_SUCCESS;
+  auto buf = [&](cl_mem_flags fl, float* data) {
+    return sdfrt::BufferHandle(clCreateBuffer(ctx, fl | (fl == CL_MEM_READ_ONLY ? CL_MEM_COPY_HOST_PTR : 0), n * sizeof(float),
+                                              fl == CL_MEM_READ_ONLY ? data : nullptr, &err));
+  };
+  auto bx = buf(CL_MEM_READ_ONLY, x.data()), by = buf(CL_MEM_READ_ONLY, y.data()), bz = buf(CL_MEM_READ_ONLY, z.data());
+  auto bo = buf(CL_MEM_WRITE_ONLY, nullptr);
+  ASSERT_EQ(err, CL_SUCCESS);
+  cl_mem args[4] = {bx.get(), by.get(), bz.get(), bo.get()};
+  for (unsigned i = 0; i < 4; ++i) kernel.set_arg(i, args[i]);
+  size_t global = n / width;
+  ASSERT_EQ(clEnqueueNDRangeKernel(test::device().queue(), kernel.get(), 1, nullptr, &global, nullptr, 0, nullptr, nullptr),
+            CL_SUCCESS);
+  ASSERT_EQ(clEnqueueReadBuffer(test::device().queue(), bo.get(), CL_TRUE, 0, n * sizeof(float), out.data(), 0, nullptr,
+                                nullptr),
+            CL_SUCCESS);
+  double worst = 0;
+  for (size_t i = 0; i < pts.size(); ++i)
+    worst = std::max(worst, std::acos(std::clamp(double(out[i]), -1.0, 1.0)) * 180 / std::numbers::pi);
+  fmt::print("[dual-normals] w{} {}: {} surface points, largest angle to central differences {:.4f} deg\n", width,
+             dbl ? "double" : "float", pts.size(), worst);
+  EXPECT_LT(worst, 0.5);
+}
+
+INSTANTIATE_TEST_SUITE_P(Widths, DualNormals, ::testing::Combine(::testing::Values(1, 8), ::testing::Bool()),
+                         [](const auto& info) {
+                           return fmt::format("w{}_{}", std::get<0>(info.param), std::get<1>(info.param) ? "double" : "float");
+                         });
+
+TEST(DualNormalsErrors, FractalWithoutDualDerivativesIsASceneError) {
+  try {
+    test::compile_text("render: {normals: dual}\nscene: {union: [{sphere: {}}, {mandelbulb: {}}]}\n");
+    FAIL() << "expected a scene error";
+  } catch (const SceneError& e) {
+    std::string what = e.what();
+    EXPECT_NE(what.find("1:19"), std::string::npos) << what;
+    EXPECT_NE(what.find("'mandelbulb' (line 2) does not have"), std::string::npos) << what;
+    EXPECT_NE(what.find("they exist for sphere, box"), std::string::npos) << what;
+  }
+}
+
+}  // namespace
+}  // namespace sdfc
