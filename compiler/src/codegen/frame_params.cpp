@@ -7,6 +7,9 @@
 //   [18..20] up * tan(fov/2)              [21..23] (low)
 //   [24]    pixel angle: 2 tan(fov/2) / height (pixel footprint per unit distance)
 //   [25]    time in seconds
+//   [26]    first anti-aliasing sample of this launch  [27] samples in it
+//           (progressive rendering launches the samples pass by pass)
+//   [28]    focus distance (depth of field)
 // Each vector is split into a float and the float of its remainder, so a
 // double-precision kernel reads the camera to ~48 bits through a float buffer.
 #include <cmath>
@@ -46,6 +49,12 @@ std::vector<float> frame_params(const ir::RenderPlan& plan, int width, int heigh
   put(f, 18, scale(up, tan_half));
   f[24] = static_cast<float>(2.0 * tan_half / height);
   f[25] = static_cast<float>(time);
+  f[26] = 0.0f;
+  f[27] = static_cast<float>(plan.march.samples);
+  double to_target = std::sqrt(sub(c.target, c.position)[0] * sub(c.target, c.position)[0] +
+                               sub(c.target, c.position)[1] * sub(c.target, c.position)[1] +
+                               sub(c.target, c.position)[2] * sub(c.target, c.position)[2]);
+  f[28] = static_cast<float>(c.focus_distance > 0 ? c.focus_distance : to_target);
   return f;
 }
 

@@ -9,6 +9,7 @@
 
 #include "sdfc/frontend/geometry_schema.hpp"
 #include "sdfc/frontend/value_reader.hpp"
+#include "read_effects.hpp"
 
 namespace sdfc {
 
@@ -22,12 +23,14 @@ using frontend::Vec3d;
 double dot(const Vec3d& a, const Vec3d& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 void read_camera(ValueReader& r, const SourceValue& v, ir::Camera& cam) {
-  MapReader m(r, v, "camera", {"position", "target", "up", "fov"});
+  MapReader m(r, v, "camera", {"position", "target", "up", "fov", "aperture", "focus_distance"});
   cam.loc = v.loc;
   cam.position = m.vec3("position", cam.position);
   cam.target = m.vec3("target", cam.target);
   cam.up = m.direction("up", cam.up);
   cam.fov_degrees = m.number("fov", cam.fov_degrees, {0, 179, true});
+  cam.aperture = m.number("aperture", cam.aperture, Range::non_negative(1e3));
+  cam.focus_distance = m.number("focus_distance", cam.focus_distance, Range::non_negative());
   Vec3d f{cam.target[0] - cam.position[0], cam.target[1] - cam.position[1], cam.target[2] - cam.position[2]};
   double len = std::sqrt(dot(f, f));
   if (len < 1e-9) {
@@ -42,7 +45,8 @@ void read_camera(ValueReader& r, const SourceValue& v, ir::Camera& cam) {
 
 void read_render(ValueReader& r, const SourceValue& v, ir::MarchSettings& s) {
   MapReader m(r, v, "render", {"width", "height", "precision", "max_steps", "hit_epsilon", "max_distance",
-                               "step_factor", "gamma", "normals"});
+                               "step_factor", "gamma", "normals", "samples", "filter", "dither", "exposure",
+                               "tone_mapping"});
   s.width = m.integer("width", s.width, 1, 16384);
   s.height = m.integer("height", s.height, 1, 16384);
   s.precision = m.word("precision", "float", {"float", "double"}) == "double" ? ir::Precision::Double : ir::Precision::Float;
@@ -53,6 +57,23 @@ void read_render(ValueReader& r, const SourceValue& v, ir::MarchSettings& s) {
   s.gamma = m.number("gamma", s.gamma, {0, 10, true});
   s.normals = m.word("normals", "tetrahedral", {"tetrahedral", "central"}) == "central" ? ir::NormalMethod::Central
                                                                                          : ir::NormalMethod::Tetrahedral;
+  s.samples = m.integer("samples", s.samples, 1, 1024);
+  s.filter = m.word("filter", "box", {"box", "tent"}) == "tent" ? ir::MarchSettings::Filter::Tent
+                                                                 : ir::MarchSettings::Filter::Box;
+  s.dither = m.word("dither", "false", {"false", "true"}) == "true";
+  s.exposure = m.number("exposure", s.exposure, Range::closed(-20, 20));
+  std::string tm = m.word("tone_mapping", "clamp", {"clamp", "reinhard", "aces"});
+  s.tone_mapping = tm == "aces"       ? ir::MarchSettings::ToneMapping::Aces
+                   : tm == "reinhard" ? ir::MarchSettings::ToneMapping::Reinhard
+                                      : ir::MarchSettings::ToneMapping::Clamp;
+}
+
+// Per-light shadow settings, shared by directional and point lights.
+void read_shadows(MapReader& m, ir::Light& l) {
+  std::string sh = m.word("shadows", "none", {"none", "hard", "soft"});
+  l.shadows = sh == "soft" ? ir::Light::Shadows::Soft : sh == "hard" ? ir::Light::Shadows::Hard : ir::Light::Shadows::None;
+  l.softness = m.number("softness", l.softness, Range::positive(1e4));
+  l.shadow_steps = m.integer("shadow_steps", l.shadow_steps, 1, 10000);
 }
 
 void read_background(ValueReader& r, const SourceValue& v, ir::Background& bg) {
@@ -82,17 +103,19 @@ void read_lights(ValueReader& r, const SourceValue& v, ir::RenderPlan& plan) {
     l.loc = key.loc;
     std::string what = "light '" + key.scalar + "'";
     if (key.scalar == "directional") {
-      MapReader m(r, body, what, {"direction", "color", "intensity"});
+      MapReader m(r, body, what, {"direction", "color", "intensity", "shadows", "softness", "shadow_steps"});
       l.kind = ir::LightKind::Directional;
       l.direction = m.direction("direction", {0.577, 0.577, -0.577});
       l.color = m.vec3("color", l.color, unit);
       l.intensity = m.number("intensity", 1.0, Range::non_negative(1e4));
+      read_shadows(m, l);
     } else if (key.scalar == "point") {
-      MapReader m(r, body, what, {"position", "color", "intensity"});
+      MapReader m(r, body, what, {"position", "color", "intensity", "shadows", "softness", "shadow_steps"});
       l.kind = ir::LightKind::Point;
       if (m.require("position")) l.position = m.vec3("position", l.position);
       l.color = m.vec3("color", l.color, unit);
       l.intensity = m.number("intensity", 1.0, Range::non_negative(1e6));
+      read_shadows(m, l);
     } else if (key.scalar == "ambient") {
       MapReader m(r, body, what, {"color", "intensity"});
       l.kind = ir::LightKind::Ambient;
@@ -120,10 +143,11 @@ void read_materials(ValueReader& r, const SourceValue& v, ir::RenderPlan& plan) 
       r.sink().error(key.loc, "'default' is the built-in material's name", "choose another name");
       continue;
     }
-    MapReader m(r, body, "material '" + md.name + "'", {"color", "specular", "shininess"});
+    MapReader m(r, body, "material '" + md.name + "'", {"color", "specular", "shininess", "reflectivity"});
     md.color = m.vec3("color", md.color, Range::closed(0, 1));
     md.specular = m.number("specular", md.specular, Range::closed(0, 100));
     md.shininess = m.number("shininess", md.shininess, Range::closed(1, 10000));
+    md.reflectivity = m.number("reflectivity", md.reflectivity, Range::closed(0, 1));
     plan.materials.push_back(md);
   }
 }
@@ -151,14 +175,15 @@ ir::Module lower_scene(const SourceValue& doc, const std::string& source_name) {
     sink.error(doc.loc, "a scene file is a map of sections (camera, render, lights, materials, scene), got " + doc.kind_name(), "");
     sink.throw_if_any();
   }
-  MapReader top(r, doc, "the scene file", {"camera", "render", "background", "lights", "materials", "scene"});
+  MapReader top(r, doc, "the scene file", {"camera", "render", "background", "lights", "materials", "effects", "scene"});
 
   ir::RenderPlan& plan = m.plan;
-  plan.materials.push_back({"default", {0.8, 0.8, 0.8}, 0.2, 32, {}});
+  plan.materials.push_back({"default", {0.8, 0.8, 0.8}, 0.2, 32, 0, {}});
   if (auto* v = top.get("camera")) read_camera(r, *v, plan.camera);
   if (auto* v = top.get("render")) read_render(r, *v, plan.march);
   if (auto* v = top.get("background")) read_background(r, *v, plan.background);
   if (auto* v = top.get("materials")) read_materials(r, *v, plan);
+  if (auto* v = top.get("effects")) frontend::read_effects(r, *v, plan.effects);
   if (auto* v = top.get("lights")) {
     read_lights(r, *v, plan);
   } else {
