@@ -209,6 +209,11 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
     used.insert("tonemap_aces");
     post += "c = tonemap_aces(c);\n";
   }
+  if (sampled && s.tone_mapping == ir::MarchSettings::ToneMapping::Clamp) {
+    // Clamping is the tone curve: per sample, so the mean of any subset of
+    // samples (a progressive pass) averages like the mean of all of them.
+    post += "c = v3(clamp(c.x, K(0.0f), K(1.0f)), clamp(c.y, K(0.0f), K(1.0f)), clamp(c.z, K(0.0f), K(1.0f)));\n";
+  }
   auto emit_post = [&] {
     size_t at = 0;
     while (at < post.size()) {

@@ -12,6 +12,13 @@ namespace sdfc::ir {
 
 using Vec3d = std::array<double, 3>;
 
+// A key of a camera path: where the camera is and looks at a given time.
+struct CameraKey {
+  double time = 0;
+  Vec3d position{0, -3, 0};
+  Vec3d target{0, 0, 0};
+};
+
 struct Camera {
   Vec3d position{0, -3, 0};
   Vec3d target{0, 0, 0};
@@ -21,6 +28,10 @@ struct Camera {
   // (0 = the distance to the target).
   double aperture = 0;
   double focus_distance = 0;
+  // A camera path (empty: the camera is static). The host evaluates it per
+  // frame into the frame block, so an animation never recompiles.
+  std::vector<CameraKey> path;
+  enum class Interpolation { Linear, CatmullRom } interpolation = Interpolation::Linear;
   SourceLoc loc;
 };
 
