@@ -106,8 +106,13 @@ int run_render(RenderArgs a) {
   for (int fno : frames) {
     const double time = fno / a.fps;
     out.beauty = sequence && has_frame_field(a.output) ? frame_path(a.output, fno) : a.output;
+    // A sequence's directory is created (out/frame_%04d.png); a single image's is not.
     auto parent = std::filesystem::path(out.beauty).parent_path();
-    if (!parent.empty()) std::filesystem::create_directories(parent);
+    if (sequence && frames.size() > 1 && !parent.empty()) {
+      std::error_code ec;
+      std::filesystem::create_directories(parent, ec);
+      if (ec) throw sdfrt::IoError(fmt::format("cannot create '{}': {}", parent.string(), ec.message()), parent.string(), ec.value());
+    }
     OfflineFrame f{codegen::frame_params(m.plan, w, h, time), w, h, m.plan.march.samples, m.plan.march.gamma};
     auto start = std::chrono::steady_clock::now();
     std::vector<std::string> paths = render_offline(renderer, f, out, a.tile, &g_cancel);
