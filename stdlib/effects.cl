@@ -191,10 +191,11 @@ inline vec3 tonemap_reinhard(vec3 c)
 //! fn tonemap_aces
 //! deps: vec3_ops
 //! class: helper
-// Narkowicz's fit of the ACES filmic curve, per channel.
+// Narkowicz's fit of the ACES filmic curve, per channel, with his 0.6
+// pre-scale so that mid-grey stays near mid-grey.
 inline real tonemap_aces_1(real x)
 {
-    x = fmax(x, K(0.0f));
+    x = 0.6f * fmax(x, K(0.0f));
     return clamp(x * (2.51f * x + 0.03f) / (x * (2.43f * x + 0.59f) + 0.14f), K(0.0f), K(1.0f));
 }
 inline vec3 tonemap_aces(vec3 c) { return v3(tonemap_aces_1(c.x), tonemap_aces_1(c.y), tonemap_aces_1(c.z)); }

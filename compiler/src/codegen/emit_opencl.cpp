@@ -34,7 +34,8 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
   for (const auto& l : m.plan.lights) any_shadows |= l.shadows != ir::Light::Shadows::None;
   CodeWriter w;
   w.line("// ---- one ray segment: march, then shade the hit or the background ----");
-  w.line("vec3 sdfc_segment(vec3 ro, vec3 rd, mask active, real pixel_angle, real jitter,");
+  w.line(fmt::format("vec3 sdfc_segment(vec3 ro, vec3 rd, mask active, real pixel_angle, real jitter,{}",
+                     fx.glow.enabled ? " real glow_weight," : ""));
   w.line("                  real* t_out, mask* hit_out, vec3* n_out, real* mat_out, real* steps_out)");
   w.open("{");
   if (root.bounds.finite()) {
@@ -108,11 +109,12 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
   w.close("}");
   if (fx.glow.enabled) {
     const auto& g = fx.glow;
-    w.line("// effects.glow: near misses glow by their closest approach, every ray by its step count");
+    w.line("// effects.glow: near misses glow by their closest approach, every ray by its step count;");
+    w.line("// camera rays only (glow_weight 0 on bounces, whose closest approach is the surface they leave)");
     w.line(fmt::format("real near = clamp(1.0f - closest / {}, K(0.0f), K(1.0f));", lit.real(g.radius)));
     w.line(fmt::format("real glow = SEL((real)(0.0f), {} * near * near, !hit) + {} * steps / {};", lit.real(g.strength),
                        lit.real(g.step_strength), lit.real(s.max_steps)));
-    w.line(fmt::format("color = v3_mad(color, {}, glow);", lit.vec3(g.color)));
+    w.line(fmt::format("color = v3_mad(color, {}, glow * glow_weight);", lit.vec3(g.color)));
   }
   if (fx.fog.enabled) {
     const auto& f = fx.fog;
@@ -138,6 +140,7 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
 // Fresnel-Schlick (no recursion in OpenCL C).
 std::string radiance_function(const ir::Module& m, std::set<std::string>& used) {
   const int depth = m.plan.effects.reflections.depth;
+  const bool glow = m.plan.effects.glow.enabled;
   CodeWriter w;
   w.line("// ---- the colour along one camera ray; the AOVs of its first hit ----");
   w.line("vec3 sdfc_radiance(vec3 ro, vec3 rd, real pixel_angle, real jitter,");
@@ -145,7 +148,8 @@ std::string radiance_function(const ir::Module& m, std::set<std::string>& used) 
   w.open("{");
   w.line("real t;");
   w.line("mask hit;");
-  w.line("vec3 color = sdfc_segment(ro, rd, M_TRUE, pixel_angle, jitter, &t, &hit, normal, mat, steps);");
+  w.line(fmt::format("vec3 color = sdfc_segment(ro, rd, M_TRUE, pixel_angle, jitter,{} &t, &hit, normal, mat, steps);",
+                     glow ? " 1.0f," : ""));
   w.line("*depth = SEL((real)(-1.0f), t, hit);  // -1 marks a miss");
   if (depth > 0) {
     used.insert("fresnel_schlick");
@@ -168,7 +172,8 @@ std::string radiance_function(const ir::Module& m, std::set<std::string>& used) 
     w.line("ro = v3_mad(p, n, 2.0f * footprint);");
     w.line("rd = v3_normalize(v3_mad(rd, n, -2.0f * v3_dot(rd, n)));");
     w.line("real s;");
-    w.line("seg = sdfc_segment(ro, rd, alive, pixel_angle, (real)(0.0f), &t, &hit, &n, &id, &s);");
+    w.line(fmt::format("seg = sdfc_segment(ro, rd, alive, pixel_angle, (real)(0.0f),{} &t, &hit, &n, &id, &s);",
+                       glow ? " 0.0f," : ""));
     w.line("alive = alive & hit;");
     w.close("}");
     w.line("color = v3_add(sum, v3_mul(weight, seg));  // the last segment counts in full");
