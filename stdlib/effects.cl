@@ -99,7 +99,11 @@ inline real shadow_soft(vec3 p, vec3 l, real tmin, real tmax, real k, real eps, 
     real prev = (real)(1e20f);
     for (int i = 0; i < max_steps && M_ANY(active); ++i) {
         real d = scene_dist(v3_mad(p, l, t));
+        // The triangulation needs the two distance spheres to overlap
+        // (d < 2 prev); a longer minimum step or an estimated distance can
+        // break that, and then the plain d is used.
         real y = d * d / (2.0f * prev);  // ~0 at the first step, where prev is huge
+        y = SEL(y, (real)(0.0f), y >= d);
         real side = sqrt(fmax(d * d - y * y, K(0.0f)));
         res = SEL(res, fmin(res, k * side / fmax(t - y, tmin)), active);
         res = SEL(res, (real)(0.0f), active & (d < eps));
