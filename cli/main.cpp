@@ -27,6 +27,8 @@ int main(int argc, char** argv) {
   reg(add_compile);
   reg(add_render);
   reg(add_devices);
+  reg(add_view);
+  reg(add_audit);
 
   try {
     app.parse(argc, argv);
