@@ -1,6 +1,8 @@
 // sdfc check SCENE: parse, validate and summarise on one screen.
 #include <fmt/format.h>
 
+#include <string>
+#include <vector>
 #include "sdfc/ir/de_info.hpp"
 
 #include <iostream>
@@ -61,7 +63,25 @@ int run_check(const SceneArgs& args) {
   std::string mats;
   for (const auto& md : p.materials) mats += std::string(mats.empty() ? "" : ", ") + md.name;
   fmt::print("materials: {} ({})\n", p.materials.size(), mats);
-  fmt::print("effects: none\n");
+  std::vector<std::string> fx;
+  const auto& e = p.effects;
+  if (e.ambient_occlusion.enabled)
+    fx.push_back(e.ambient_occlusion.method == ir::AmbientOcclusion::Method::StepCount ? "ambient occlusion (step count)"
+                                                                                       : "ambient occlusion (normal samples)");
+  int shadowed = 0;
+  for (const auto& l : p.lights) shadowed += l.shadows != ir::Light::Shadows::None;
+  if (shadowed) fx.push_back(fmt::format("shadows ({} light(s))", shadowed));
+  if (e.glow.enabled) fx.push_back("glow");
+  if (e.fog.enabled) fx.push_back(e.fog.height_falloff > 0 ? "height fog" : "fog");
+  if (e.reflections.depth > 0) fx.push_back(fmt::format("reflections (depth {})", e.reflections.depth));
+  if (p.camera.aperture > 0) fx.push_back("depth of field");
+  if (p.march.samples > 1) fx.push_back(fmt::format("{} samples per pixel", p.march.samples));
+  if (p.march.dither) fx.push_back("dither");
+  if (p.march.tone_mapping != ir::MarchSettings::ToneMapping::Clamp) fx.push_back("tone mapping");
+  if (!p.camera.path.empty()) fx.push_back(fmt::format("camera path ({} keys)", p.camera.path.size()));
+  std::string list;
+  for (const auto& f : fx) list += (list.empty() ? "" : ", ") + f;
+  fmt::print("effects: {}\n", list.empty() ? "none" : list);
   const auto& r = p.march;
   fmt::print("render: {}x{}, {} precision, up to {} steps, hit epsilon {} px, step factor {}\n", r.width, r.height,
              r.precision == ir::Precision::Float ? "float" : "double", r.max_steps, r.hit_epsilon, r.step_factor);

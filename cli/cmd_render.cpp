@@ -1,8 +1,11 @@
-// sdfc render SCENE -o OUT.png: compile, build on the device, render by
-// tiles with progress on stderr, write the PNG through a temporary file.
+// sdfc render SCENE -o OUT.png: compile, build on the device once, render
+// one frame or a sequence (--frames) by tiles with progress on stderr, and
+// write the PNG (8 or 16 bit) and any AOVs through temporary files.
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <chrono>
+#include <filesystem>
 #include <atomic>
 #include <csignal>
 #include <iostream>
@@ -13,6 +16,7 @@
 #include <sdfrt/renderer.hpp>
 
 #include "cli_support.hpp"
+#include "offline_render.hpp"
 #include "commands.hpp"
 #include "sdfc/compile.hpp"
 
@@ -32,6 +36,10 @@ struct RenderArgs {
   int tile = 256;
   int repeat = 0;
   bool quiet = false;
+  int bit_depth = 8;
+  std::vector<std::string> aovs;
+  std::string frames;
+  double fps = 30;
 };
 
 int run_render(RenderArgs a) {
@@ -47,8 +55,12 @@ int run_render(RenderArgs a) {
   if (m.plan.march.precision == ir::Precision::Double && !device.info().fp64)
     throw sdfrt::DeviceError(fmt::format("the scene asks for double precision, but {} has no fp64 support",
                                          device.info().device_name));
-  codegen::EmittedKernel k = codegen::emit_opencl(m, {width, false});
+  codegen::EmitOptions eo;
+  eo.simd_width = width;
+  eo.aovs = !a.aovs.empty();
+  codegen::EmittedKernel k = codegen::emit_opencl(m, eo);
   sdfrt::KernelSpec spec{k.source, k.entry, k.simd_width, k.planes, ""};
+  // One build serves every frame: time and the camera are frame parameters.
   sdfrt::Renderer renderer(device, spec);
   const auto& bs = renderer.build_stats();
   if (!a.quiet)
@@ -56,16 +68,16 @@ int run_render(RenderArgs a) {
                              device.info().device_name, bs.build_ms, bs.cache_hit ? " (cached)" : "", k.simd_width);
 
   const int w = m.plan.march.width, h = m.plan.march.height;
-  std::vector<float> frame = codegen::frame_params(m.plan, w, h, 0.0);
   std::signal(SIGINT, on_sigint);
-  sdfrt::RenderOptions opt;
-  opt.tile_width = opt.tile_height = a.tile;
-  opt.cancel = &g_cancel;
-  sdfrt::FloatImage img;
   if (a.repeat > 0) {
+    std::vector<float> frame = codegen::frame_params(m.plan, w, h, 0.0);
+    sdfrt::RenderOptions opt;
+    opt.tile_width = opt.tile_height = a.tile;
+    opt.cancel = &g_cancel;
     // One warm-up frame, then N timed frames; the median is what to quote.
     renderer.render(frame, w, h, opt);
     std::vector<double> times;
+    sdfrt::FloatImage img;
     for (int i = 0; i < a.repeat; ++i) {
       sdfrt::RenderStats st;
       img = renderer.render(frame, w, h, opt, &st);
@@ -75,18 +87,41 @@ int run_render(RenderArgs a) {
     std::sort(times.begin(), times.end());
     double median = times.size() % 2 ? times[times.size() / 2] : 0.5 * (times[times.size() / 2 - 1] + times[times.size() / 2]);
     std::cerr << fmt::format("median {:.1f} ms over {} frames ({}x{})\n", median, a.repeat, w, h);
-  } else {
-    sdfrt::ProgressBar bar("tiles");
-    if (!a.quiet) opt.progress = bar.callback();
-    sdfrt::RenderStats st;
-    img = renderer.render(frame, w, h, opt, &st);
-    bar.finish();
-    if (!a.quiet) std::cerr << fmt::format("rendered {}x{} in {:.0f} ms\n", w, h, st.total_ms);
+    sdfrt::WriteReport rep = sdfrt::write_png(a.output, img);
+    if (rep.nonfinite_samples > 0)
+      std::cerr << fmt::format("warning: {} NaN/Inf samples were written as black\n", rep.nonfinite_samples);
+    std::cout << rep.path << "\n";
+    return kOk;
   }
-  sdfrt::WriteReport rep = sdfrt::write_png(a.output, img);
-  if (rep.nonfinite_samples > 0)
-    std::cerr << fmt::format("warning: {} NaN/Inf samples were written as black\n", rep.nonfinite_samples);
-  std::cout << rep.path << "\n";
+
+  std::vector<int> frames = a.frames.empty() ? std::vector<int>{0} : parse_frames(a.frames);
+  const bool sequence = !a.frames.empty();
+  if (sequence && frames.size() > 1 && !has_frame_field(a.output))
+    throw std::invalid_argument(fmt::format(
+        "-o '{}': {} frames need a frame-number field in the name, e.g. out/frame_%04d.png", a.output, frames.size()));
+  OfflineOutput out;
+  out.bit_depth = a.bit_depth;
+  out.aovs = a.aovs;
+  out.quiet = a.quiet;
+  for (int fno : frames) {
+    const double time = fno / a.fps;
+    out.beauty = sequence && has_frame_field(a.output) ? frame_path(a.output, fno) : a.output;
+    // A sequence's directory is created (out/frame_%04d.png); a single image's is not.
+    auto parent = std::filesystem::path(out.beauty).parent_path();
+    if (sequence && frames.size() > 1 && !parent.empty()) {
+      std::error_code ec;
+      std::filesystem::create_directories(parent, ec);
+      if (ec) throw sdfrt::IoError(fmt::format("cannot create '{}': {}", parent.string(), ec.message()), parent.string(), ec.value());
+    }
+    OfflineFrame f{codegen::frame_params(m.plan, w, h, time), w, h, m.plan.march.samples, m.plan.march.gamma};
+    auto start = std::chrono::steady_clock::now();
+    std::vector<std::string> paths = render_offline(renderer, f, out, a.tile, &g_cancel);
+    double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    if (!a.quiet)
+      std::cerr << fmt::format("{}rendered {}x{} in {:.0f} ms\n", sequence ? fmt::format("frame {} (t = {:.3f} s): ", fno, time) : "",
+                               w, h, ms);
+    for (const auto& p : paths) std::cout << p << "\n";
+  }
   return kOk;
 }
 
@@ -96,7 +131,7 @@ Action add_render(CLI::App& app) {
   auto* cmd = app.add_subcommand("render", "Render a scene to a PNG on an OpenCL device");
   auto a = std::make_shared<RenderArgs>();
   a->scene.add_to(*cmd);
-  cmd->add_option("-o,--output", a->output, "Output PNG")->required();
+  cmd->add_option("-o,--output", a->output, "Output PNG (a pattern such as out/frame_%04d.png with --frames)")->required();
   cmd->add_option("--width", a->width, "Image width (overrides render.width)")->check(CLI::Range(1, 16384));
   cmd->add_option("--height", a->height, "Image height (overrides render.height)")->check(CLI::Range(1, 16384));
   cmd->add_option("--device", a->device, "Device id from 'sdfc devices' (P:D, an index or part of the name); "
@@ -107,6 +142,13 @@ Action add_render(CLI::App& app) {
   cmd->add_option("--repeat", a->repeat, "Render one warm-up and N timed frames; print each time and the median")
       ->check(CLI::Range(1, 1000));
   cmd->add_flag("-q,--quiet", a->quiet, "No progress or timing on stderr");
+  cmd->add_option("--bit-depth", a->bit_depth, "PNG bits per channel: 8 or 16")->check(CLI::IsMember({8, 16}));
+  cmd->add_option("--aov", a->aovs, "Also write these as PFM beside the image (OUT.<aov>.pfm): depth, normal, steps, material")
+      ->delimiter(',')
+      ->check(CLI::IsMember(kAovNames));
+  cmd->add_option("--frames", a->frames, "Render frames N, FIRST:LAST or FIRST:LAST:STEP at time = frame / fps; "
+                                         "-o then needs a field such as %04d");
+  cmd->add_option("--fps", a->fps, "Frames per second for --frames (default 30)")->check(CLI::Range(0.001, 10000.0));
   return [a] { return run_render(*a); };
 }
 

@@ -45,7 +45,11 @@ class ExampleScene : public ::testing::TestWithParam<std::string> {
     auto it = cache.find(path.string());
     if (it != cache.end()) return it->second;
     SourceValue doc = load_yaml_file(path.string());
-    apply_overrides(doc, {fmt::format("render.width={}", kW), fmt::format("render.height={}", kH)});
+    // The CPU tracer follows one pinhole ray through each pixel centre, so the
+    // depth plane must too: one sample, no lens, no first-step dither (with
+    // more samples the depth AOV comes from a jittered sample).
+    apply_overrides(doc, {fmt::format("render.width={}", kW), fmt::format("render.height={}", kH), "render.samples=1",
+                          "render.dither=false", "camera.aperture=0"});
     Rendered r{build_module(doc, path.string()), {}, {}};
     r.w1 = render(r.module, 1);
     r.w8 = render(r.module, 8);

@@ -333,6 +333,48 @@ vec3 shade_surface(vec3 p, vec3 n, vec3 v, real mat)
     return c;
 }
 
+// ---- one ray segment: march, then shade the hit or the background ----
+vec3 sdfc_segment(vec3 ro, vec3 rd, mask active, real pixel_angle, real jitter,
+                  real* t_out, mask* hit_out, vec3* n_out, real* mat_out, real* steps_out)
+{
+    // march only where the ray crosses the scene's bounds (inferred from the IR)
+    real t0, t1;
+    active = active & ray_box(ro, rd, v3(-2.041f, -2.041f, -1.391f), v3(2.041f, 2.041f, 1.1450895f), &t0, &t1);
+    t1 = fmin(t1, 50.0f);
+    (void)jitter;
+    real t, steps;
+    mask hit = march_sphere_trace(ro, rd, t0, t1, active, pixel_angle, 0.5f, 1.0f, 256, &t, &steps);
+    vec3 color = shade_background(rd, v3(0.0f, 0.0f, 1.0f), v3(0.45f, 0.55f, 0.7f), v3(0.15f, 0.17f, 0.22f));
+    vec3 n = v3_splat(0.0f);
+    real mat = -1.0f;
+    if (M_ANY(hit))
+    {
+        // shading runs once per packet with a hit, never inside the march
+        vec3 pos = v3_mad(ro, rd, t);
+        real h = fmax(pixel_angle * t * 0.5f, K(1e-6f));  // finite-difference step: half a pixel footprint
+        n = normal_tetrahedral(pos, h);
+        real id;
+        (void)scene_dist_mat(pos, &id);
+        mat = SEL(mat, id, hit);
+        (void)h;
+        vec3 lit = shade_surface(pos, n, v3_scale(rd, -1.0f), id);
+        color = v3_select(color, lit, hit);
+    }
+    *t_out = t; *hit_out = hit; *n_out = n; *mat_out = mat; *steps_out = steps;
+    return color;
+}
+
+// ---- the colour along one camera ray; the AOVs of its first hit ----
+vec3 sdfc_radiance(vec3 ro, vec3 rd, real pixel_angle, real jitter,
+                   real* depth, vec3* normal, real* mat, real* steps)
+{
+    real t;
+    mask hit;
+    vec3 color = sdfc_segment(ro, rd, M_TRUE, pixel_angle, jitter, &t, &hit, normal, mat, steps);
+    *depth = SEL((real)(-1.0f), t, hit);  // -1 marks a miss
+    return color;
+}
+
 // ---- the render kernel: SDFC_WIDTH adjacent pixels per work-item ----
 __kernel void sdfc_render(__global float* out, __global const float* frame,
                           const int img_w, const int img_h, const int tile_x0, const int tile_y0,
@@ -341,39 +383,23 @@ __kernel void sdfc_render(__global float* out, __global const float* frame,
     const int gx = get_global_id(0), gy = get_global_id(1);
     const int x0 = gx * SDFC_WIDTH;
     (void)tile_w;
-    real px = (real)((scalar)(tile_x0 + x0)) + LANE_IDS + 0.5f;  // pixel centres of the lanes
-    real py = (real)((scalar)(tile_y0 + gy) + 0.5f);
+    real px0 = (real)((scalar)(tile_x0 + x0)) + LANE_IDS;  // left edges of the lanes' pixels
+    real py0 = (real)((scalar)(tile_y0 + gy));
     // camera basis from the frame block (float high + low parts, see frame_params.cpp)
     #define FRAME3(i) v3((real)((scalar)frame[i] + (scalar)frame[i + 3]), (real)((scalar)frame[i + 1] + (scalar)frame[i + 4]), (real)((scalar)frame[i + 2] + (scalar)frame[i + 5]))
-    vec3 ro = FRAME3(0), forward = FRAME3(6), right = FRAME3(12), up = FRAME3(18);
+    vec3 eye = FRAME3(0), forward = FRAME3(6), right = FRAME3(12), up = FRAME3(18);
     #undef FRAME3
     const scalar pixel_angle = (scalar)frame[24];
+    real depth, mat, steps;
+    vec3 normal;
+    real px = px0 + 0.5f, py = py0 + 0.5f;  // pixel centres
     real u = 2.0f * px / (real)((scalar)img_w) - 1.0f;
     real v = 1.0f - 2.0f * py / (real)((scalar)img_h);
     vec3 rd = v3_normalize(v3_add(forward, v3_add(v3_scale(right, u), v3_scale(up, v))));
-
-    // march only where the ray crosses the scene's bounds (inferred from the IR)
-    real t0, t1;
-    mask active = ray_box(ro, rd, v3(-2.041f, -2.041f, -1.391f), v3(2.041f, 2.041f, 1.1450895f), &t0, &t1);
-    t1 = fmin(t1, 50.0f);
-    real t, steps;
-    mask hit = march_sphere_trace(ro, rd, t0, t1, active, pixel_angle, 0.5f, 1.0f, 256, &t, &steps);
-    (void)steps;
-
-    vec3 color = shade_background(rd, v3(0.0f, 0.0f, 1.0f), v3(0.45f, 0.55f, 0.7f), v3(0.15f, 0.17f, 0.22f));
-    if (M_ANY(hit))
-    {
-        // shading runs once per packet with a hit, never inside the march
-        vec3 pos = v3_mad(ro, rd, t);
-        real h = fmax(pixel_angle * t * 0.5f, K(1e-6f));  // finite-difference step: half a pixel footprint
-        vec3 n = normal_tetrahedral(pos, h);
-        real mat;
-        (void)scene_dist_mat(pos, &mat);
-        vec3 lit = shade_surface(pos, n, v3_scale(rd, -1.0f), mat);
-        color = v3_select(color, lit, hit);
-    }
+    real jitter = 0.0f;
+    vec3 c = sdfc_radiance(eye, rd, pixel_angle, jitter, &depth, &normal, &mat, &steps);
+    vec3 color = c;
     color = shade_encode(color, 0.45454547f);
-    real depth = SEL((real)(-1.0f), t, hit);  // -1 marks a miss
 
     __global float* o = out + gy * out_stride + x0;
     const int plane = out_stride * tile_h;
@@ -381,4 +407,5 @@ __kernel void sdfc_render(__global float* out, __global const float* frame,
     STORE_REAL(color.y, o + plane);
     STORE_REAL(color.z, o + 2 * plane);
     STORE_REAL(depth, o + 3 * plane);
+    (void)normal; (void)mat; (void)steps;
 }

@@ -24,29 +24,21 @@ namespace {
 using detail::CodeWriter;
 using detail::Literals;
 
-std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std::string>& used) {
+// One ray segment: bounds, march, shading at the hit, background on a miss,
+// and the effects that belong to a segment (AO, glow, fog). The primary ray
+// and every reflection bounce run through it.
+std::string segment_function(const ir::Module& m, const Literals& lit, std::set<std::string>& used) {
   const ir::MarchSettings& s = m.plan.march;
+  const ir::Effects& fx = m.plan.effects;
   const ir::Props& root = m.graph->node(m.root).props;
+  bool any_shadows = false;
+  for (const auto& l : m.plan.lights) any_shadows |= l.shadows != ir::Light::Shadows::None;
   CodeWriter w;
-  w.line("// ---- the render kernel: SDFC_WIDTH adjacent pixels per work-item ----");
-  w.line("__kernel void sdfc_render(__global float* out, __global const float* frame,");
-  w.line("                          const int img_w, const int img_h, const int tile_x0, const int tile_y0,");
-  w.line("                          const int tile_w, const int tile_h, const int out_stride)");
+  w.line("// ---- one ray segment: march, then shade the hit or the background ----");
+  w.line(fmt::format("vec3 sdfc_segment(vec3 ro, vec3 rd, mask active, real pixel_angle, real jitter,{}",
+                     fx.glow.enabled ? " real glow_weight," : ""));
+  w.line("                  real* t_out, mask* hit_out, vec3* n_out, real* mat_out, real* steps_out)");
   w.open("{");
-  w.line("const int gx = get_global_id(0), gy = get_global_id(1);");
-  w.line("const int x0 = gx * SDFC_WIDTH;");
-  w.line("(void)tile_w;");
-  w.line("real px = (real)((scalar)(tile_x0 + x0)) + LANE_IDS + 0.5f;  // pixel centres of the lanes");
-  w.line("real py = (real)((scalar)(tile_y0 + gy) + 0.5f);");
-  w.line("// camera basis from the frame block (float high + low parts, see frame_params.cpp)");
-  w.line("#define FRAME3(i) v3((real)((scalar)frame[i] + (scalar)frame[i + 3]), (real)((scalar)frame[i + 1] + (scalar)frame[i + 4]), (real)((scalar)frame[i + 2] + (scalar)frame[i + 5]))");
-  w.line("vec3 ro = FRAME3(0), forward = FRAME3(6), right = FRAME3(12), up = FRAME3(18);");
-  w.line("#undef FRAME3");
-  w.line("const scalar pixel_angle = (scalar)frame[24];");
-  w.line("real u = 2.0f * px / (real)((scalar)img_w) - 1.0f;");
-  w.line("real v = 1.0f - 2.0f * py / (real)((scalar)img_h);");
-  w.line("vec3 rd = v3_normalize(v3_add(forward, v3_add(v3_scale(right, u), v3_scale(up, v))));");
-  w.blank();
   if (root.bounds.finite()) {
     // Pad by 1% of the size plus a little: the hit test accepts points up to
     // an epsilon outside the surface.
@@ -56,47 +48,262 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
     used.insert("ray_box");
     w.line("// march only where the ray crosses the scene's bounds (inferred from the IR)");
     w.line("real t0, t1;");
-    w.line(fmt::format("mask active = ray_box(ro, rd, {}, {}, &t0, &t1);", lit.vec3(b.lo), lit.vec3(b.hi)));
+    w.line(fmt::format("active = active & ray_box(ro, rd, {}, {}, &t0, &t1);", lit.vec3(b.lo), lit.vec3(b.hi)));
     w.line(fmt::format("t1 = fmin(t1, {});", lit.real(s.max_distance)));
   } else {
     w.line("// the scene is unbounded (it holds a plane): march the whole range");
     w.line("real t0 = 0.0f;");
     w.line(fmt::format("real t1 = {};", lit.typed(s.max_distance)));
-    w.line("mask active = M_TRUE;");
   }
-  used.insert("march_sphere_trace");
+  if (s.dither) {
+    w.line("// render.dither: a random fraction of the first step against banding");
+    w.line(fmt::format("t0 = t0 + jitter * {} * fmax(scene_dist(v3_mad(ro, rd, t0)), K(0.0f));", lit.real(s.step_factor)));
+  } else {
+    w.line("(void)jitter;");
+  }
   w.line("real t, steps;");
-  w.line(fmt::format("mask hit = march_sphere_trace(ro, rd, t0, t1, active, pixel_angle, {}, {}, {}, &t, &steps);",
-                     lit.real(s.hit_epsilon), lit.real(s.step_factor), s.max_steps));
-  w.line("(void)steps;");
-  w.blank();
+  if (fx.glow.enabled) {
+    used.insert("march_sphere_trace_closest");
+    w.line("real closest;");
+    w.line(fmt::format("mask hit = march_sphere_trace_closest(ro, rd, t0, t1, active, pixel_angle, {}, {}, {}, &t, &steps, &closest);",
+                       lit.real(s.hit_epsilon), lit.real(s.step_factor), s.max_steps));
+  } else {
+    used.insert("march_sphere_trace");
+    w.line(fmt::format("mask hit = march_sphere_trace(ro, rd, t0, t1, active, pixel_angle, {}, {}, {}, &t, &steps);",
+                       lit.real(s.hit_epsilon), lit.real(s.step_factor), s.max_steps));
+  }
   used.insert("shade_background");
-  used.insert("shade_encode");
   w.line(fmt::format("vec3 color = shade_background(rd, {}, {}, {});", lit.vec3(m.plan.camera.up),
                      lit.vec3(m.plan.background.top), lit.vec3(m.plan.background.bottom)));
+  w.line("vec3 n = v3_splat(0.0f);");
+  w.line("real mat = -1.0f;");
   w.line("if (M_ANY(hit))");
   w.open("{");
   w.line("// shading runs once per packet with a hit, never inside the march");
   w.line("vec3 pos = v3_mad(ro, rd, t);");
   w.line("real h = fmax(pixel_angle * t * 0.5f, K(1e-6f));  // finite-difference step: half a pixel footprint");
   if (s.normals == ir::NormalMethod::Dual) {
-    w.line("vec3 n = scene_normal_dual(pos);  // exact gradient by forward-mode differentiation");
-    w.line("(void)h;");
+    w.line("n = scene_normal_dual(pos);  // exact gradient by forward-mode differentiation");
   } else {
     const char* normal_fn = s.normals == ir::NormalMethod::Central ? "normal_central" : "normal_tetrahedral";
     used.insert(normal_fn);
-    w.line(fmt::format("vec3 n = {}(pos, h);", normal_fn));
+    w.line(fmt::format("n = {}(pos, h);", normal_fn));
   }
-  w.line("real mat;");
-  w.line("(void)scene_dist_mat(pos, &mat);");
+  w.line("real id;");
+  w.line("(void)scene_dist_mat(pos, &id);");
+  w.line("mat = SEL(mat, id, hit);");
   bool traps = false;
   for (const auto& md : m.plan.materials) traps = traps || !md.trap_palette.empty();
-  if (traps) w.line("real trap = scene_trap(pos);  // orbit-trap colour, once per hit");
-  w.line(std::string("vec3 lit = shade_surface(pos, n, v3_scale(rd, -1.0f), mat") + (traps ? ", trap" : "") + ");");
+  std::string extra;
+  if (traps) {
+    w.line("real trap = scene_trap(pos);  // orbit-trap colour, once per hit");
+    extra += ", trap";
+  }
+  if (fx.ambient_occlusion.enabled) {
+    const auto& ao = fx.ambient_occlusion;
+    if (ao.method == ir::AmbientOcclusion::Method::NormalSamples) {
+      used.insert("ao_normal_samples");
+      w.line(fmt::format("// effects.ambient_occlusion: {} probes along the normal", ao.samples));
+      w.line(fmt::format("real occlusion = ao_normal_samples(pos, n, {}, {}, {});", ao.samples, lit.real(ao.distance),
+                         lit.real(ao.strength)));
+    } else {
+      used.insert("ao_step_count");
+      w.line("// effects.ambient_occlusion: from the march's step count");
+      w.line(fmt::format("real occlusion = ao_step_count(steps, {}, {});", lit.real(s.max_steps), lit.real(ao.strength)));
+    }
+    extra += ", occlusion";
+  }
+  if (any_shadows) extra += ", h";
+  if (!any_shadows) w.line("(void)h;");
+  w.line(fmt::format("vec3 lit = shade_surface(pos, n, v3_scale(rd, -1.0f), id{});", extra));
   w.line("color = v3_select(color, lit, hit);");
   w.close("}");
+  if (fx.glow.enabled) {
+    const auto& g = fx.glow;
+    w.line("// effects.glow: near misses glow by their closest approach, every ray by its step count;");
+    w.line("// camera rays only (glow_weight 0 on bounces, whose closest approach is the surface they leave)");
+    w.line(fmt::format("real near = clamp(1.0f - closest / {}, K(0.0f), K(1.0f));", lit.real(g.radius)));
+    w.line(fmt::format("real glow = SEL((real)(0.0f), {} * near * near, !hit) + {} * steps / {};", lit.real(g.strength),
+                       lit.real(g.step_strength), lit.real(s.max_steps)));
+    w.line(fmt::format("color = v3_mad(color, {}, glow * glow_weight);", lit.vec3(g.color)));
+  }
+  if (fx.fog.enabled) {
+    const auto& f = fx.fog;
+    w.line("// effects.fog: misses count as reaching max_distance");
+    w.line(fmt::format("real fog_t = SEL((real)({}), t, hit);", lit.real(s.max_distance)));
+    if (f.height_falloff > 0) {
+      used.insert("fog_height");
+      w.line(fmt::format("color = fog_height(color, {}, ro, rd, fog_t, {}, {}, {}, {});", lit.vec3(f.color),
+                         lit.vec3(m.plan.camera.up), lit.real(f.density), lit.real(f.height_falloff), lit.real(f.base_height)));
+    } else {
+      used.insert("fog_exponential");
+      w.line(fmt::format("color = fog_exponential(color, {}, fog_t, {});", lit.vec3(f.color), lit.real(f.density)));
+    }
+  }
+  w.line("*t_out = t; *hit_out = hit; *n_out = n; *mat_out = mat; *steps_out = steps;");
+  w.line("return color;");
+  w.close("}");
+  return w.take();
+}
+
+// The colour seen along one camera ray: the primary segment and, with
+// effects.reflections, a bounded loop of mirror bounces weighted by
+// Fresnel-Schlick (no recursion in OpenCL C).
+std::string radiance_function(const ir::Module& m, std::set<std::string>& used) {
+  const int depth = m.plan.effects.reflections.depth;
+  const bool glow = m.plan.effects.glow.enabled;
+  CodeWriter w;
+  w.line("// ---- the colour along one camera ray; the AOVs of its first hit ----");
+  w.line("vec3 sdfc_radiance(vec3 ro, vec3 rd, real pixel_angle, real jitter,");
+  w.line("                   real* depth, vec3* normal, real* mat, real* steps)");
+  w.open("{");
+  w.line("real t;");
+  w.line("mask hit;");
+  w.line(fmt::format("vec3 color = sdfc_segment(ro, rd, M_TRUE, pixel_angle, jitter,{} &t, &hit, normal, mat, steps);",
+                     glow ? " 1.0f," : ""));
+  w.line("*depth = SEL((real)(-1.0f), t, hit);  // -1 marks a miss");
+  if (depth > 0) {
+    used.insert("fresnel_schlick");
+    w.line(fmt::format("// effects.reflections: up to {} bounce(s)", depth));
+    w.line("vec3 weight = v3_splat(1.0f), sum = v3_splat(0.0f), n = *normal;");
+    w.line("real id = *mat;");
+    w.line("mask alive = hit;");
+    w.line("vec3 seg = color;");
+    w.line(fmt::format("for (int bounce = 0; bounce < {} && M_ANY(alive); ++bounce)", depth));
+    w.open("{");
+    w.line("real f = fresnel_schlick(material_reflectivity(id), -v3_dot(rd, n));");
+    w.line("alive = alive & (material_reflectivity(id) > 0.0f);");
+    w.line("// the surface keeps 1 - F of its own colour; F goes to what it reflects");
+    w.line("real keep = SEL((real)(1.0f), 1.0f - f, alive);");
+    w.line("sum = v3_add(sum, v3_mul(weight, v3_scale(seg, keep)));");
+    w.line("weight = v3_select(v3_splat(0.0f), v3_scale(weight, f), alive);");
+    w.line("if (!M_ANY(alive)) break;");
+    w.line("vec3 p = v3_mad(ro, rd, t);");
+    w.line("real footprint = fmax(pixel_angle * t, K(1e-5f));");
+    w.line("ro = v3_mad(p, n, 2.0f * footprint);");
+    w.line("rd = v3_normalize(v3_mad(rd, n, -2.0f * v3_dot(rd, n)));");
+    w.line("real s;");
+    w.line(fmt::format("seg = sdfc_segment(ro, rd, alive, pixel_angle, (real)(0.0f),{} &t, &hit, &n, &id, &s);",
+                       glow ? " 0.0f," : ""));
+    w.line("alive = alive & hit;");
+    w.close("}");
+    w.line("color = v3_add(sum, v3_mul(weight, seg));  // the last segment counts in full");
+  }
+  w.line("return color;");
+  w.close("}");
+  return w.take();
+}
+
+std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std::string>& used, bool aovs) {
+  const ir::MarchSettings& s = m.plan.march;
+  const ir::Camera& cam = m.plan.camera;
+  const bool sampled = s.samples > 1 || cam.aperture > 0;
+  CodeWriter w;
+  w.line("// ---- the render kernel: SDFC_WIDTH adjacent pixels per work-item ----");
+  w.line("__kernel void sdfc_render(__global float* out, __global const float* frame,");
+  w.line("                          const int img_w, const int img_h, const int tile_x0, const int tile_y0,");
+  w.line("                          const int tile_w, const int tile_h, const int out_stride)");
+  w.open("{");
+  w.line("const int gx = get_global_id(0), gy = get_global_id(1);");
+  w.line("const int x0 = gx * SDFC_WIDTH;");
+  w.line("(void)tile_w;");
+  w.line("real px0 = (real)((scalar)(tile_x0 + x0)) + LANE_IDS;  // left edges of the lanes' pixels");
+  w.line("real py0 = (real)((scalar)(tile_y0 + gy));");
+  w.line("// camera basis from the frame block (float high + low parts, see frame_params.cpp)");
+  w.line("#define FRAME3(i) v3((real)((scalar)frame[i] + (scalar)frame[i + 3]), (real)((scalar)frame[i + 1] + (scalar)frame[i + 4]), (real)((scalar)frame[i + 2] + (scalar)frame[i + 5]))");
+  w.line("vec3 eye = FRAME3(0), forward = FRAME3(6), right = FRAME3(12), up = FRAME3(18);");
+  w.line("#undef FRAME3");
+  w.line("const scalar pixel_angle = (scalar)frame[24];");
+  w.line("real depth, mat, steps;");
+  w.line("vec3 normal;");
+  std::string post;  // per-sample exposure and tone curve
+  if (s.exposure != 0) post += fmt::format("c = v3_scale(c, {});  // render.exposure: {} stop(s)\n", lit.real(std::exp2(s.exposure)), s.exposure);
+  if (s.tone_mapping == ir::MarchSettings::ToneMapping::Reinhard) {
+    used.insert("tonemap_reinhard");
+    post += "c = tonemap_reinhard(c);\n";
+  } else if (s.tone_mapping == ir::MarchSettings::ToneMapping::Aces) {
+    used.insert("tonemap_aces");
+    post += "c = tonemap_aces(c);\n";
+  }
+  if (sampled && s.tone_mapping == ir::MarchSettings::ToneMapping::Clamp) {
+    // Clamping is the tone curve: per sample, so the mean of any subset of
+    // samples (a progressive pass) averages like the mean of all of them.
+    post += "c = v3(clamp(c.x, K(0.0f), K(1.0f)), clamp(c.y, K(0.0f), K(1.0f)), clamp(c.z, K(0.0f), K(1.0f)));\n";
+  }
+  auto emit_post = [&] {
+    size_t at = 0;
+    while (at < post.size()) {
+      size_t nl = post.find('\n', at);
+      w.line(post.substr(at, nl - at));
+      at = nl + 1;
+    }
+  };
+  if (!sampled) {
+    w.line("real px = px0 + 0.5f, py = py0 + 0.5f;  // pixel centres");
+    w.line("real u = 2.0f * px / (real)((scalar)img_w) - 1.0f;");
+    w.line("real v = 1.0f - 2.0f * py / (real)((scalar)img_h);");
+    w.line("vec3 rd = v3_normalize(v3_add(forward, v3_add(v3_scale(right, u), v3_scale(up, v))));");
+    if (s.dither) {
+      used.insert("fx_hash");
+      w.line("real jitter = fx_hash(px, py, (real)(7.0f));");
+    } else {
+      w.line("real jitter = 0.0f;");
+    }
+    w.line("vec3 c = sdfc_radiance(eye, rd, pixel_angle, jitter, &depth, &normal, &mat, &steps);");
+    emit_post();
+    w.line("vec3 color = c;");
+  } else {
+    used.insert("fx_hash");
+    used.insert("fx_fract");
+    w.line("// render.samples: samples [frame[26], frame[26] + frame[27]) of this pixel, placed by the");
+    w.line("// R2 low-discrepancy sequence shifted per pixel (Cranley-Patterson rotation)");
+    w.line("const int s_first = (int)frame[26], s_count = max((int)frame[27], 1);");
+    w.line("real rx = fx_hash(px0, py0, (real)(1.0f)), ry = fx_hash(px0, py0, (real)(2.0f));");
+    if (cam.aperture > 0) {
+      w.line("// camera.aperture: a thin lens focused at frame[28], sampled over its disc");
+      w.line("real lx = fx_hash(px0, py0, (real)(3.0f)), ly = fx_hash(px0, py0, (real)(4.0f));");
+      w.line("const scalar focus = (scalar)frame[28];");
+      w.line("vec3 lens_right = v3_normalize(right), lens_up = v3_normalize(up);");
+    }
+    w.line("vec3 color = v3_splat(0.0f);");
+    w.line("for (int si = s_first; si < s_first + s_count; ++si)");
+    w.open("{");
+    w.line("const scalar sf = (scalar)si;");
+    w.line("real jx = fx_fract(rx + sf * 0.7548776662f), jy = fx_fract(ry + sf * 0.5698402910f);");
+    if (s.filter == ir::MarchSettings::Filter::Tent) {
+      used.insert("fx_tent");
+      w.line("real px = px0 + 0.5f + fx_tent(jx), py = py0 + 0.5f + fx_tent(jy);  // tent filter, two pixels wide");
+    } else {
+      w.line("real px = px0 + jx, py = py0 + jy;  // box filter: anywhere in the pixel");
+    }
+    w.line("real u = 2.0f * px / (real)((scalar)img_w) - 1.0f;");
+    w.line("real v = 1.0f - 2.0f * py / (real)((scalar)img_h);");
+    w.line("vec3 rd = v3_normalize(v3_add(forward, v3_add(v3_scale(right, u), v3_scale(up, v))));");
+    w.line("vec3 ro = eye;");
+    if (cam.aperture > 0) {
+      w.line("real a = fx_fract(lx + sf * 0.5698402910f), b = fx_fract(ly + sf * 0.7548776662f);");
+      w.line(fmt::format("real r = {} * sqrt(a), phi = 6.2831853f * b;", lit.real(0.5 * cam.aperture)));
+      w.line("vec3 focal = v3_mad(eye, rd, focus / v3_dot(rd, forward));");
+      w.line("ro = v3_add(eye, v3_add(v3_scale(lens_right, r * cos(phi)), v3_scale(lens_up, r * sin(phi))));");
+      w.line("rd = v3_normalize(v3_sub(focal, ro));");
+    }
+    if (s.dither) {
+      w.line("real jitter = fx_hash(px, py, (real)(7.0f) + sf);");
+    } else {
+      w.line("real jitter = 0.0f;");
+    }
+    w.line("real d_s, mat_s, steps_s;");
+    w.line("vec3 n_s;");
+    w.line("vec3 c = sdfc_radiance(ro, rd, pixel_angle, jitter, &d_s, &n_s, &mat_s, &steps_s);");
+    emit_post();
+    w.line("color = v3_add(color, c);");
+    w.line("// the AOVs come from the first sample of the pass");
+    w.line("if (si == s_first) { depth = d_s; normal = n_s; mat = mat_s; steps = steps_s; }");
+    w.close("}");
+    w.line("color = v3_scale(color, 1.0f / (scalar)s_count);");
+  }
+  used.insert("shade_encode");
   w.line(fmt::format("color = shade_encode(color, {});", lit.real(1.0 / s.gamma)));
-  w.line("real depth = SEL((real)(-1.0f), t, hit);  // -1 marks a miss");
   w.blank();
   w.line("__global float* o = out + gy * out_stride + x0;");
   w.line("const int plane = out_stride * tile_h;");
@@ -104,6 +311,16 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
   w.line("STORE_REAL(color.y, o + plane);");
   w.line("STORE_REAL(color.z, o + 2 * plane);");
   w.line("STORE_REAL(depth, o + 3 * plane);");
+  if (aovs) {
+    w.line("// AOVs: normal (0 on a miss), march steps, material id (-1 on a miss)");
+    w.line("STORE_REAL(normal.x, o + 4 * plane);");
+    w.line("STORE_REAL(normal.y, o + 5 * plane);");
+    w.line("STORE_REAL(normal.z, o + 6 * plane);");
+    w.line("STORE_REAL(steps, o + 7 * plane);");
+    w.line("STORE_REAL(mat, o + 8 * plane);");
+  } else {
+    w.line("(void)normal; (void)mat; (void)steps;");
+  }
   w.close("}");
   return w.take();
 }
@@ -136,13 +353,15 @@ EmittedKernel emit_opencl(const ir::Module& m, const EmitOptions& opt) {
   std::string scene = detail::emit_scene_functions(m, lit, used);
   if (m.plan.march.normals == ir::NormalMethod::Dual) scene += "\n" + detail::emit_scene_gradient(m, lit, used);
   std::string shading = detail::emit_shading(m.plan, lit, used);
-  std::string kernel = render_kernel(m, lit, used);
+  std::string kernel = segment_function(m, lit, used) + "\n" + radiance_function(m, used) + "\n" +
+                       render_kernel(m, lit, used, opt.aovs);
   if (opt.probe_kernel) kernel += "\n" + probe_kernel();
 
   auto fns = StdlibManifest::instance().closure({used.begin(), used.end()});
   EmittedKernel k;
   k.simd_width = wd;
   k.planes = {"r", "g", "b", "depth"};
+  if (opt.aovs) k.planes.insert(k.planes.end(), {"normal_x", "normal_y", "normal_z", "steps", "material"});
   k.frame_floats = kFrameFloats;
   std::string before, after;
   for (const auto* f : fns) {

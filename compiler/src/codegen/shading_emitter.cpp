@@ -28,6 +28,20 @@ void emit_trap_palette(CodeWriter& w, const Literals& lit, const ir::MaterialDef
   w.close("}");
 }
 
+// The shadow factor towards a light (empty when the light casts none).
+std::string shadow_call(const ir::Light& l, const std::string& to_light, const std::string& tmax, const Literals& lit,
+                        std::set<std::string>& used) {
+  if (l.shadows == ir::Light::Shadows::None) return "";
+  std::string common = "shadow_origin, " + to_light + ", 2.0f * footprint, " + tmax;
+  std::string tail = fmt::format("footprint, 0.5f * footprint, {}, v3_dot(n, {}) > 0.0f", l.shadow_steps, to_light);
+  if (l.shadows == ir::Light::Shadows::Hard) {
+    used.insert("shadow_hard");
+    return fmt::format("shadow_hard({}, {})", common, tail);
+  }
+  used.insert("shadow_soft");
+  return fmt::format("shadow_soft({}, {}, {})", common, lit.real(l.softness), tail);
+}
+
 }  // namespace
 
 std::string emit_shading(const ir::RenderPlan& plan, const Literals& lit, std::set<std::string>& used) {
@@ -55,8 +69,26 @@ std::string emit_shading(const ir::RenderPlan& plan, const Literals& lit, std::s
   w.close("}");
   w.blank();
 
+  if (plan.effects.reflections.depth > 0) {
+    w.line("// ---- reflectivity per material (Fresnel-Schlick R0) ----");
+    w.line("real material_reflectivity(real id)");
+    w.open("{");
+    w.line(fmt::format("real r = {};", lit.typed(mats[0].reflectivity)));
+    if (mats.size() == 1) w.line("(void)id;");
+    for (size_t i = 1; i < mats.size(); ++i)
+      w.line(fmt::format("r = SEL(r, {}, id == {});  // '{}'", lit.typed(mats[i].reflectivity), lit.real(double(i)),
+                         mats[i].name));
+    w.line("return r;");
+    w.close("}");
+    w.blank();
+  }
+
+  const bool ao = plan.effects.ambient_occlusion.enabled;
+  bool any_shadows = false;
+  for (const auto& l : plan.lights) any_shadows |= l.shadows != ir::Light::Shadows::None;
   w.line("// ---- lighting: v points from the surface to the eye ----");
-  w.line("vec3 shade_surface(vec3 p, vec3 n, vec3 v, real mat" + trap_param + ")");
+  w.line(fmt::format("vec3 shade_surface(vec3 p, vec3 n, vec3 v, real mat{}{}{})", trap_param, ao ? ", real occlusion" : "",
+                     any_shadows ? ", real footprint" : ""));
   w.open("{");
   w.line("vec3 albedo;");
   w.line("real specular, shininess;");
@@ -66,6 +98,12 @@ std::string emit_shading(const ir::RenderPlan& plan, const Literals& lit, std::s
     if (l.kind == ir::LightKind::Ambient)
       for (int i = 0; i < 3; ++i) ambient[i] += l.color[i] * l.intensity;
   w.line(fmt::format("vec3 c = v3_mul(albedo, {});  // ambient, all ambient lights summed", lit.vec3(ambient)));
+  if (ao) w.line("c = v3_scale(c, occlusion);  // ambient occlusion dims the ambient light only");
+  if (any_shadows) {
+    // Shadow rays leave from two footprints above the surface and take steps
+    // of at least half a footprint, so they neither self-shadow nor stall.
+    w.line("const vec3 shadow_origin = v3_mad(p, n, 2.0f * footprint);");
+  }
   bool any_direct = false;
   for (size_t i = 0; i < plan.lights.size(); ++i) {
     const ir::Light& l = plan.lights[i];
@@ -73,8 +111,11 @@ std::string emit_shading(const ir::RenderPlan& plan, const Literals& lit, std::s
     if (l.kind == ir::LightKind::Directional) {
       any_direct = true;
       w.line(fmt::format("// light {}: directional ({})", i, where(l.loc)));
-      w.line(fmt::format("c = v3_add(c, shade_blinn_phong(n, {}, v, albedo, specular, shininess, {}));",
-                         lit.vec3({-l.direction[0], -l.direction[1], -l.direction[2]}), lit.vec3(radiance)));
+      std::string to_light = lit.vec3({-l.direction[0], -l.direction[1], -l.direction[2]});
+      std::string term = fmt::format("shade_blinn_phong(n, {}, v, albedo, specular, shininess, {})", to_light, lit.vec3(radiance));
+      std::string sh = shadow_call(l, to_light, lit.real(plan.march.max_distance), lit, used);
+      if (!sh.empty()) term = fmt::format("v3_scale({}, {})", term, sh);
+      w.line(fmt::format("c = v3_add(c, {});", term));
     } else if (l.kind == ir::LightKind::Point) {
       any_direct = true;
       w.line(fmt::format("// light {}: point, falls off with the squared distance ({})", i, where(l.loc)));
@@ -82,8 +123,9 @@ std::string emit_shading(const ir::RenderPlan& plan, const Literals& lit, std::s
       w.line(fmt::format("vec3 l = v3_sub({}, p);", lit.vec3(l.position)));
       w.line("real dist2 = fmax(v3_dot(l, l), K(1e-8f));");
       w.line("l = v3_scale(l, rsqrt(dist2));");
-      w.line(fmt::format("c = v3_add(c, v3_scale(shade_blinn_phong(n, l, v, albedo, specular, shininess, {}), 1.0f / dist2));",
-                         lit.vec3(radiance)));
+      std::string sh = shadow_call(l, "l", "sqrt(dist2)", lit, used);
+      w.line(fmt::format("c = v3_add(c, v3_scale(shade_blinn_phong(n, l, v, albedo, specular, shininess, {}), {}1.0f / dist2));",
+                         lit.vec3(radiance), sh.empty() ? "" : sh + " * "));
       w.close("}");
     }
   }

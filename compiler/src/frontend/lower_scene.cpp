@@ -10,6 +10,7 @@
 #include "sdfc/frontend/geometry_schema.hpp"
 #include "sdfc/ir/dual_normals.hpp"
 #include "sdfc/frontend/value_reader.hpp"
+#include "read_effects.hpp"
 
 namespace sdfc {
 
@@ -22,28 +23,72 @@ using frontend::Vec3d;
 
 double dot(const Vec3d& a, const Vec3d& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
+// A view direction must exist and must not run along the up vector.
+void check_view(ValueReader& r, const SourceLoc& loc, const SourceLoc& up_loc, const Vec3d& position, const Vec3d& target,
+                const Vec3d& up, const std::string& what) {
+  Vec3d f{target[0] - position[0], target[1] - position[1], target[2] - position[2]};
+  double len = std::sqrt(dot(f, f));
+  if (len < 1e-9) {
+    r.sink().error(loc, what + ": target is at the camera position, so there is no view direction", "move the target");
+    return;
+  }
+  if (std::fabs(dot(f, up)) / len > 0.9999)
+    r.sink().error(up_loc, what + ": up is parallel to the view direction",
+                   "choose an up vector across the view, e.g. [0, 0, 1] for a camera looking along y");
+}
+
+void read_camera_path(ValueReader& r, const SourceValue& v, ir::Camera& cam, const SourceLoc& up_loc) {
+  MapReader m(r, v, "camera.path", {"keys", "interpolation"});
+  cam.interpolation = m.word("interpolation", "linear", {"linear", "catmull_rom"}) == "catmull_rom"
+                          ? ir::Camera::Interpolation::CatmullRom
+                          : ir::Camera::Interpolation::Linear;
+  const SourceValue* keys = m.require("keys");
+  if (!keys) return;
+  if (!keys->is_seq() || keys->items.empty()) {
+    r.sink().error(keys->loc, "camera.path.keys: expected a list of keys, e.g. '- {time: 0, position: [0, -5, 1], target: [0, 0, 0]}'", "");
+    return;
+  }
+  for (const auto& item : keys->items) {
+    MapReader k(r, item, "camera.path key", {"time", "position", "target"});
+    ir::CameraKey key;
+    if (k.require("time")) key.time = k.number("time", 0);
+    if (k.require("position")) key.position = k.vec3("position", key.position);
+    if (k.require("target")) key.target = k.vec3("target", key.target);
+    if (!cam.path.empty() && key.time <= cam.path.back().time)
+      r.sink().error(item.loc, fmt::format("camera.path: key times must increase, but {} follows {}", key.time, cam.path.back().time), "");
+    check_view(r, item.loc, up_loc, key.position, key.target, cam.up, "camera.path key");
+    cam.path.push_back(key);
+  }
+}
+
 void read_camera(ValueReader& r, const SourceValue& v, ir::Camera& cam) {
-  MapReader m(r, v, "camera", {"position", "target", "up", "fov"});
+  MapReader m(r, v, "camera", {"position", "target", "up", "fov", "aperture", "focus_distance", "path"});
   cam.loc = v.loc;
   cam.position = m.vec3("position", cam.position);
   cam.target = m.vec3("target", cam.target);
   cam.up = m.direction("up", cam.up);
   cam.fov_degrees = m.number("fov", cam.fov_degrees, {0, 179, true});
-  Vec3d f{cam.target[0] - cam.position[0], cam.target[1] - cam.position[1], cam.target[2] - cam.position[2]};
-  double len = std::sqrt(dot(f, f));
-  if (len < 1e-9) {
-    r.sink().error(v.loc, "camera: target is at the camera position, so there is no view direction", "move the target");
+  cam.aperture = m.number("aperture", cam.aperture, Range::non_negative(1e3));
+  cam.focus_distance = m.number("focus_distance", cam.focus_distance, Range::non_negative());
+  const SourceLoc up_loc = m.get("up") ? m.get("up")->loc : v.loc;
+  if (const SourceValue* path = m.get("path")) {
+    if (m.get("position") || m.get("target"))
+      r.sink().error(path->loc, "camera: give either position and target or a path, not both",
+                     "move position and target into the path's keys");
+    read_camera_path(r, *path, cam, up_loc);
+    if (!cam.path.empty()) {
+      cam.position = cam.path.front().position;  // the static view is the first key
+      cam.target = cam.path.front().target;
+    }
     return;
   }
-  double c = std::fabs(dot(f, cam.up)) / len;
-  if (c > 0.9999)
-    r.sink().error(m.get("up") ? m.get("up")->loc : v.loc, "camera: up is parallel to the view direction",
-                   "choose an up vector across the view, e.g. [0, 0, 1] for a camera looking along y");
+  check_view(r, v.loc, up_loc, cam.position, cam.target, cam.up, "camera");
 }
 
 void read_render(ValueReader& r, const SourceValue& v, ir::MarchSettings& s) {
   MapReader m(r, v, "render", {"width", "height", "precision", "max_steps", "hit_epsilon", "max_distance",
-                               "step_factor", "gamma", "normals", "lipschitz_correction"});
+                               "step_factor", "gamma", "normals", "lipschitz_correction", "samples", "filter",
+                               "dither", "exposure", "tone_mapping"});
   s.width = m.integer("width", s.width, 1, 16384);
   s.height = m.integer("height", s.height, 1, 16384);
   s.precision = m.word("precision", "float", {"float", "double"}) == "double" ? ir::Precision::Double : ir::Precision::Float;
@@ -57,6 +102,23 @@ void read_render(ValueReader& r, const SourceValue& v, ir::MarchSettings& s) {
   s.normals = normals == "central" ? ir::NormalMethod::Central
               : normals == "dual"  ? ir::NormalMethod::Dual
                                    : ir::NormalMethod::Tetrahedral;
+  s.samples = m.integer("samples", s.samples, 1, 1024);
+  s.filter = m.word("filter", "box", {"box", "tent"}) == "tent" ? ir::MarchSettings::Filter::Tent
+                                                                 : ir::MarchSettings::Filter::Box;
+  s.dither = m.word("dither", "false", {"false", "true"}) == "true";
+  s.exposure = m.number("exposure", s.exposure, Range::closed(-20, 20));
+  std::string tm = m.word("tone_mapping", "clamp", {"clamp", "reinhard", "aces"});
+  s.tone_mapping = tm == "aces"       ? ir::MarchSettings::ToneMapping::Aces
+                   : tm == "reinhard" ? ir::MarchSettings::ToneMapping::Reinhard
+                                      : ir::MarchSettings::ToneMapping::Clamp;
+}
+
+// Per-light shadow settings, shared by directional and point lights.
+void read_shadows(MapReader& m, ir::Light& l) {
+  std::string sh = m.word("shadows", "none", {"none", "hard", "soft"});
+  l.shadows = sh == "soft" ? ir::Light::Shadows::Soft : sh == "hard" ? ir::Light::Shadows::Hard : ir::Light::Shadows::None;
+  l.softness = m.number("softness", l.softness, Range::positive(1e4));
+  l.shadow_steps = m.integer("shadow_steps", l.shadow_steps, 1, 10000);
 }
 
 void read_background(ValueReader& r, const SourceValue& v, ir::Background& bg) {
@@ -86,17 +148,19 @@ void read_lights(ValueReader& r, const SourceValue& v, ir::RenderPlan& plan) {
     l.loc = key.loc;
     std::string what = "light '" + key.scalar + "'";
     if (key.scalar == "directional") {
-      MapReader m(r, body, what, {"direction", "color", "intensity"});
+      MapReader m(r, body, what, {"direction", "color", "intensity", "shadows", "softness", "shadow_steps"});
       l.kind = ir::LightKind::Directional;
       l.direction = m.direction("direction", {0.577, 0.577, -0.577});
       l.color = m.vec3("color", l.color, unit);
       l.intensity = m.number("intensity", 1.0, Range::non_negative(1e4));
+      read_shadows(m, l);
     } else if (key.scalar == "point") {
-      MapReader m(r, body, what, {"position", "color", "intensity"});
+      MapReader m(r, body, what, {"position", "color", "intensity", "shadows", "softness", "shadow_steps"});
       l.kind = ir::LightKind::Point;
       if (m.require("position")) l.position = m.vec3("position", l.position);
       l.color = m.vec3("color", l.color, unit);
       l.intensity = m.number("intensity", 1.0, Range::non_negative(1e6));
+      read_shadows(m, l);
     } else if (key.scalar == "ambient") {
       MapReader m(r, body, what, {"color", "intensity"});
       l.kind = ir::LightKind::Ambient;
@@ -138,10 +202,11 @@ void read_materials(ValueReader& r, const SourceValue& v, ir::RenderPlan& plan) 
       r.sink().error(key.loc, "'default' is the built-in material's name", "choose another name");
       continue;
     }
-    MapReader m(r, body, "material '" + md.name + "'", {"color", "specular", "shininess", "orbit_trap"});
+    MapReader m(r, body, "material '" + md.name + "'", {"color", "specular", "shininess", "orbit_trap", "reflectivity"});
     md.color = m.vec3("color", md.color, Range::closed(0, 1));
     md.specular = m.number("specular", md.specular, Range::closed(0, 100));
     md.shininess = m.number("shininess", md.shininess, Range::closed(1, 10000));
+    md.reflectivity = m.number("reflectivity", md.reflectivity, Range::closed(0, 1));
     if (const SourceValue* t = m.get("orbit_trap")) read_orbit_trap(r, *t, md);
     plan.materials.push_back(md);
   }
@@ -186,7 +251,7 @@ ir::Module lower_scene(const SourceValue& doc, const std::string& source_name) {
     sink.error(doc.loc, "a scene file is a map of sections (camera, render, lights, materials, scene), got " + doc.kind_name(), "");
     sink.throw_if_any();
   }
-  MapReader top(r, doc, "the scene file", {"camera", "render", "background", "lights", "materials", "scene"});
+  MapReader top(r, doc, "the scene file", {"camera", "render", "background", "lights", "materials", "effects", "scene"});
 
   ir::RenderPlan& plan = m.plan;
   ir::MaterialDef builtin;  // the default material: the MaterialDef defaults
@@ -196,6 +261,7 @@ ir::Module lower_scene(const SourceValue& doc, const std::string& source_name) {
   if (auto* v = top.get("render")) read_render(r, *v, plan.march);
   if (auto* v = top.get("background")) read_background(r, *v, plan.background);
   if (auto* v = top.get("materials")) read_materials(r, *v, plan);
+  if (auto* v = top.get("effects")) frontend::read_effects(r, *v, plan.effects);
   if (auto* v = top.get("lights")) {
     read_lights(r, *v, plan);
   } else {

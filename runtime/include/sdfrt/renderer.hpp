@@ -40,6 +40,11 @@ struct RenderOptions {
   // dropped). PoCL compiles a work-group function per launch shape, so this
   // trades some wasted pixels for one compile instead of up to four.
   bool uniform_launch = false;
+  // Render only the band of rows [row_begin, row_begin + row_count) of the
+  // width x height image (row_count 0: to the bottom). The result is a
+  // width x row_count image, so huge renders can stream band by band.
+  int row_begin = 0;
+  int row_count = 0;
 };
 
 struct RenderStats {

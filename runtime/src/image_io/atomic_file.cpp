@@ -86,6 +86,26 @@ void AtomicFile::write(const void* data, std::size_t size) {
   }
 }
 
+void AtomicFile::write_at(std::size_t offset, const void* data, std::size_t size) {
+  if (fd_ < 0) throw IoError(fmt::format("cannot write '{}': file already closed", path_), path_, 0);
+  flush_buffer();
+  const char* p = static_cast<const char*>(data);
+  std::size_t at = offset, left = size;
+  while (left > 0) {
+    const ssize_t n = ::pwrite(fd_, p, left, static_cast<off_t>(at));
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      fail("write", errno);
+    }
+    if (n == 0) fail("write", ENOSPC);
+    p += n;
+    at += static_cast<std::size_t>(n);
+    left -= static_cast<std::size_t>(n);
+  }
+  written_ = std::max(written_, offset + size);
+  if (::lseek(fd_, static_cast<off_t>(written_), SEEK_SET) < 0) fail("seek", errno);
+}
+
 void AtomicFile::commit() {
   if (fd_ < 0) throw IoError(fmt::format("cannot write '{}': file already closed", path_), path_, 0);
   flush_buffer();

@@ -16,6 +16,10 @@ class AtomicFile {
   AtomicFile& operator=(const AtomicFile&) = delete;
 
   void write(const void* data, std::size_t size);
+  // Writes at a byte offset (for formats stored in another order than they
+  // are produced, like PFM's bottom-up rows); later write() calls append
+  // after the furthest byte written.
+  void write_at(std::size_t offset, const void* data, std::size_t size);
   void commit();
   std::size_t bytes_written() const noexcept { return written_; }
 

@@ -78,7 +78,14 @@ void Renderer::upload_frame(const std::vector<float>& frame) {
 FloatImage Renderer::render(const std::vector<float>& frame, int width, int height,
                             const RenderOptions& options, RenderStats* stats_out) {
   const auto start = std::chrono::steady_clock::now();
-  const TilePlan plan = plan_tiles(width, height, options.tile_width, options.tile_height);
+  if (width < 1 || height < 1 || width > kMaxImageSide || height > kMaxImageSide)
+    throw std::invalid_argument(fmt::format("image size {}x{} is outside 1..{}", width, height, kMaxImageSide));
+  const int band_rows = options.row_count > 0 ? options.row_count : height - options.row_begin;
+  if (options.row_begin < 0 || band_rows < 1 || options.row_begin + band_rows > height)
+    throw std::invalid_argument(fmt::format("rows {}..{} are outside the image's {} rows", options.row_begin,
+                                            options.row_begin + band_rows, height));
+  // Tiles are planned over the band; the kernel sees image rows.
+  const TilePlan plan = plan_tiles(width, band_rows, options.tile_width, options.tile_height);
   const int simd = spec_.simd_width;
   const std::size_t planes = spec_.planes.size();
 
@@ -100,7 +107,7 @@ FloatImage Renderer::render(const std::vector<float>& frame, int width, int heig
         plan.max_width, plan.max_height, planes));
   }
 
-  FloatImage image(width, height, spec_.planes);
+  FloatImage image(width, band_rows, spec_.planes);
   ensure_out_buffer(max_floats);
   upload_frame(frame);
 
@@ -127,7 +134,7 @@ FloatImage Renderer::render(const std::vector<float>& frame, int width, int heig
     const int groups_x = ceil_div(launch_w, simd);
     const int stride = groups_x * simd;
     kernel.set_arg(kTileX0, static_cast<cl_int>(tile.x0));
-    kernel.set_arg(kTileY0, static_cast<cl_int>(tile.y0));
+    kernel.set_arg(kTileY0, static_cast<cl_int>(tile.y0 + options.row_begin));
     kernel.set_arg(kTileW, static_cast<cl_int>(launch_w));
     kernel.set_arg(kTileH, static_cast<cl_int>(launch_h));
     kernel.set_arg(kOutStride, static_cast<cl_int>(stride));

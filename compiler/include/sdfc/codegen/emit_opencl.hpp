@@ -15,6 +15,7 @@ namespace sdfc::codegen {
 struct EmitOptions {
   int simd_width = 1;  // 1 (GPUs, one pixel per work-item) or 2/4/8/16 (CPU packets)
   bool probe_kernel = false;  // also emit sdfc_probe, which evaluates the distance at given points
+  bool aovs = false;          // also store normal_x/y/z, steps and material planes after r, g, b, depth
 };
 
 struct EmittedKernel {

@@ -12,11 +12,26 @@ namespace sdfc::ir {
 
 using Vec3d = std::array<double, 3>;
 
+// A key of a camera path: where the camera is and looks at a given time.
+struct CameraKey {
+  double time = 0;
+  Vec3d position{0, -3, 0};
+  Vec3d target{0, 0, 0};
+};
+
 struct Camera {
   Vec3d position{0, -3, 0};
   Vec3d target{0, 0, 0};
   Vec3d up{0, 0, 1};
   double fov_degrees = 45;  // vertical
+  // Depth of field: lens diameter (0 = pinhole) and the distance in focus
+  // (0 = the distance to the target).
+  double aperture = 0;
+  double focus_distance = 0;
+  // A camera path (empty: the camera is static). The host evaluates it per
+  // frame into the frame block, so an animation never recompiles.
+  std::vector<CameraKey> path;
+  enum class Interpolation { Linear, CatmullRom } interpolation = Interpolation::Linear;
   SourceLoc loc;
 };
 
@@ -34,6 +49,14 @@ struct MarchSettings {
   bool lipschitz_correction = true;  // divide subtrees with L > 1 by L (issue 9)
   double gamma = 2.2;
   NormalMethod normals = NormalMethod::Tetrahedral;
+  // Anti-aliasing: jittered samples per pixel and the reconstruction filter
+  // (box: one pixel wide; tent: two pixels wide, importance-sampled).
+  int samples = 1;
+  enum class Filter { Box, Tent } filter = Filter::Box;
+  bool dither = false;  // jitter the first march step against banding
+  // Exposure in stops, then the tone curve, then gamma.
+  double exposure = 0;
+  enum class ToneMapping { Clamp, Reinhard, Aces } tone_mapping = ToneMapping::Clamp;
 };
 
 struct Background {
@@ -49,6 +72,11 @@ struct Light {
   Vec3d position{0, 0, 0};    // point
   Vec3d color{1, 1, 1};
   double intensity = 1.0;
+  // Shadows towards this light: hard (a hit/miss march) or soft (Quilez's
+  // penumbra estimate, sharper for larger softness), with their own budget.
+  enum class Shadows { None, Hard, Soft } shadows = Shadows::None;
+  double softness = 16;
+  int shadow_steps = 64;
   SourceLoc loc;
 };
 
@@ -61,12 +89,45 @@ struct MaterialDef {
   // colour from the palette, mixed into `color` by trap_mix. Empty: none.
   std::vector<Vec3d> trap_palette;
   double trap_mix = 0.0;
+  double reflectivity = 0;  // reflectance at normal incidence (Fresnel-Schlick R0)
   SourceLoc loc;
 };
 
-// Effects live in their own struct so the effects work has a place to grow;
-// the foundation renders none of them and so emits no code for them.
-struct Effects {};
+// Effects: each is emitted into the kernel only when enabled here.
+struct AmbientOcclusion {
+  bool enabled = false;
+  enum class Method { NormalSamples, StepCount } method = Method::NormalSamples;
+  int samples = 5;        // normal_samples: distance probes along the normal
+  double distance = 0.5;  // normal_samples: how far the probes reach
+  double strength = 1.0;
+};
+
+struct Glow {
+  bool enabled = false;
+  Vec3d color{1.0, 0.8, 0.5};
+  double strength = 1.0;       // from the closest approach of a missed ray
+  double radius = 0.1;         // closest approach at which that glow fades out
+  double step_strength = 0.0;  // from the march's step count (steps / max_steps)
+};
+
+struct Fog {
+  bool enabled = false;
+  Vec3d color{0.5, 0.6, 0.7};
+  double density = 0.05;        // extinction per unit distance at base_height
+  double height_falloff = 0.0;  // > 0: density falls as exp(-falloff * (height - base_height))
+  double base_height = 0.0;     // height along the camera's up vector
+};
+
+struct Reflections {
+  int depth = 0;  // bounces after the primary hit; 0 = off
+};
+
+struct Effects {
+  AmbientOcclusion ambient_occlusion;
+  Glow glow;
+  Fog fog;
+  Reflections reflections;
+};
 
 struct RenderPlan {
   Camera camera;

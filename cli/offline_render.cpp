@@ -1,0 +1,201 @@
+#include "offline_render.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <regex>
+#include <sdfrt/errors.hpp>
+#include <sdfrt/progress.hpp>
+#include <sdfrt/stream_writers.hpp>
+#include <stdexcept>
+
+namespace sdfc::cli {
+
+namespace {
+
+// Progressive rendering keeps a float RGB sum of the whole image; above this
+// it renders all samples in one pass, streamed (and says so).
+constexpr std::size_t kMaxAccumulatorBytes = std::size_t(1) << 30;
+
+int plane_of(const sdfrt::KernelSpec& spec, const std::string& name) {
+  auto it = std::find(spec.planes.begin(), spec.planes.end(), name);
+  if (it == spec.planes.end()) throw std::logic_error("the kernel has no plane " + name);
+  return static_cast<int>(it - spec.planes.begin());
+}
+
+struct AovWriters {
+  std::vector<std::unique_ptr<sdfrt::BandWriter>> writers;
+  std::vector<std::string> paths;
+  AovWriters(const sdfrt::KernelSpec& spec, const OfflineFrame& f, const OfflineOutput& out) {
+    for (const auto& a : out.aovs) {
+      std::vector<int> planes;
+      if (a == "normal")
+        planes = {plane_of(spec, "normal_x"), plane_of(spec, "normal_y"), plane_of(spec, "normal_z")};
+      else
+        planes = {plane_of(spec, a)};
+      paths.push_back(aov_path(out.beauty, a));
+      writers.push_back(sdfrt::open_pfm_writer(paths.back(), f.width, f.height, planes));
+    }
+  }
+  void write(const sdfrt::FloatImage& band) {
+    for (auto& w : writers) w->write_band(band);
+  }
+  void finish() {
+    for (auto& w : writers) w->finish();
+  }
+};
+
+// Tile progress over every band (and pass) of a frame.
+struct FrameProgress {
+  sdfrt::ProgressBar bar{"tiles"};
+  int total = 0, done = 0;
+  bool quiet;
+  explicit FrameProgress(bool q) : quiet(q) {}
+  std::function<void(int, int)> band_callback() {
+    return [this](int d, int) {
+      if (!quiet) bar.update(done + d, total);
+    };
+  }
+};
+
+int tiles_in(int width, int rows, int tile) { return ((width + tile - 1) / tile) * ((rows + tile - 1) / tile); }
+
+}  // namespace
+
+std::string aov_path(const std::string& beauty, const std::string& aov) {
+  std::filesystem::path p(beauty);
+  return (p.parent_path() / (p.stem().string() + "." + aov + ".pfm")).string();
+}
+
+std::vector<std::string> render_offline(sdfrt::Renderer& renderer, const OfflineFrame& f, const OfflineOutput& out,
+                                        int tile, std::atomic<bool>* cancel) {
+  const sdfrt::KernelSpec& spec = renderer.spec();
+  const int w = f.width, h = f.height;
+  const std::size_t pixels = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
+  const bool progressive = f.samples > 1 && pixels * 3 * sizeof(float) <= kMaxAccumulatorBytes;
+  if (f.samples > 1 && !progressive && !out.quiet)
+    std::cerr << fmt::format("note: {}x{} is too large to refine progressively; rendering all {} samples in one pass\n",
+                             w, h, f.samples);
+  const int passes = progressive ? f.samples : 1;
+  const int bands = (h + tile - 1) / tile;
+  FrameProgress progress(out.quiet);
+  progress.total = tiles_in(w, h, tile) * passes;
+
+  sdfrt::RenderOptions opt;
+  opt.tile_width = opt.tile_height = tile;
+  opt.cancel = cancel;
+  opt.progress = progress.band_callback();
+
+  AovWriters aovs(spec, f, out);
+  std::vector<std::string> written;
+  std::vector<float> frame = f.frame;
+  if (!progressive) {
+    auto beauty = sdfrt::open_png_writer(out.beauty, w, h, {0, 1, 2}, out.bit_depth);
+    for (int b = 0; b < bands; ++b) {
+      opt.row_begin = b * tile;
+      opt.row_count = std::min(tile, h - opt.row_begin);
+      sdfrt::FloatImage band = renderer.render(frame, w, h, opt);
+      beauty->write_band(band);
+      aovs.write(band);
+      progress.done += tiles_in(w, opt.row_count, tile);
+    }
+    progress.bar.finish();
+    written.push_back(beauty->finish().path);
+    aovs.finish();
+    written.insert(written.end(), aovs.paths.begin(), aovs.paths.end());
+    return written;
+  }
+
+  // Progressive: pass k renders sample k of every pixel. The kernel returns
+  // display values, gamma(mean of tone-mapped samples); undoing the gamma
+  // gives the tone-mapped mean, which averages across passes.
+  std::vector<float> sum(pixels * 3, 0.0f);
+  const float gamma = static_cast<float>(f.gamma), inv_gamma = 1.0f / gamma;
+  for (int pass = 0; pass < passes; ++pass) {
+    frame[26] = static_cast<float>(pass);
+    frame[27] = 1.0f;
+    try {
+      for (int b = 0; b < bands; ++b) {
+        opt.row_begin = b * tile;
+        opt.row_count = std::min(tile, h - opt.row_begin);
+        sdfrt::FloatImage band = renderer.render(frame, w, h, opt);
+        const std::size_t at = static_cast<std::size_t>(opt.row_begin) * w;
+        for (int c = 0; c < 3; ++c) {
+          auto plane = band.plane(c);
+          float* s = sum.data() + c * pixels + at;
+          for (std::size_t i = 0; i < plane.size(); ++i) s[i] += std::pow(std::clamp(plane[i], 0.0f, 1.0f), gamma);
+        }
+        if (pass == 0) aovs.write(band);
+        progress.done += tiles_in(w, opt.row_count, tile);
+      }
+    } catch (const sdfrt::Cancelled&) {
+      progress.bar.finish();
+      if (pass > 0)
+        std::cerr << fmt::format("sdfc: stopped in pass {} of {}; {} holds {} sample(s) per pixel\n", pass + 1, passes,
+                                 out.beauty, pass);
+      throw;
+    }
+    if (pass == 0) aovs.finish();
+    // Rewrite the beauty image from the mean so far, one band at a time.
+    auto beauty = sdfrt::open_png_writer(out.beauty, w, h, {0, 1, 2}, out.bit_depth);
+    const float scale = 1.0f / static_cast<float>(pass + 1);
+    for (int b = 0; b < bands; ++b) {
+      const int y0 = b * tile, rows = std::min(tile, h - y0);
+      sdfrt::FloatImage band(w, rows, {"r", "g", "b"});
+      const std::size_t at = static_cast<std::size_t>(y0) * w;
+      for (int c = 0; c < 3; ++c) {
+        auto dst = band.plane(c);
+        const float* s = sum.data() + c * pixels + at;
+        for (std::size_t i = 0; i < dst.size(); ++i) dst[i] = std::pow(s[i] * scale, inv_gamma);
+      }
+      beauty->write_band(band);
+    }
+    beauty->finish();
+  }
+  progress.bar.finish();
+  written.push_back(out.beauty);
+  written.insert(written.end(), aovs.paths.begin(), aovs.paths.end());
+  return written;
+}
+
+std::vector<int> parse_frames(const std::string& spec) {
+  static const std::regex re(R"(^(\d+)(?::(\d+)(?::(\d+))?)?$)");
+  std::smatch m;
+  if (!std::regex_match(spec, m, re))
+    throw std::invalid_argument(fmt::format("--frames '{}': expected N, FIRST:LAST or FIRST:LAST:STEP (e.g. 0:120)", spec));
+  int first = std::stoi(m[1]);
+  int last = m[2].matched ? std::stoi(m[2]) : first;
+  int step = m[3].matched ? std::stoi(m[3]) : 1;
+  if (last < first || step < 1)
+    throw std::invalid_argument(fmt::format("--frames '{}': LAST must not be before FIRST and STEP must be at least 1", spec));
+  if ((last - first) / step >= 100000) throw std::invalid_argument(fmt::format("--frames '{}': more than 100000 frames", spec));
+  std::vector<int> out;
+  for (int i = first; i <= last; i += step) out.push_back(i);
+  return out;
+}
+
+namespace {
+const std::regex kFrameField(R"(%(0?\d*)d)");
+}
+
+bool has_frame_field(const std::string& pattern) {
+  return std::distance(std::sregex_iterator(pattern.begin(), pattern.end(), kFrameField), std::sregex_iterator()) == 1;
+}
+
+std::string frame_path(const std::string& pattern, int frame) {
+  std::smatch m;
+  if (!has_frame_field(pattern) || !std::regex_search(pattern, m, kFrameField))
+    throw std::invalid_argument(fmt::format(
+        "-o '{}': a sequence needs one frame-number field such as %04d in the file name", pattern));
+  std::string flags = m[1];
+  int width = flags.empty() ? 0 : std::stoi(flags);
+  std::string num = fmt::format("{}", frame);
+  if (static_cast<int>(num.size()) < width) num = std::string(width - num.size(), flags[0] == '0' ? '0' : ' ') + num;
+  return m.prefix().str() + num + m.suffix().str();
+}
+
+}  // namespace sdfc::cli

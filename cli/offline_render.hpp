@@ -1,0 +1,49 @@
+#pragma once
+// Offline rendering of one frame to files: the image is rendered band by
+// band (one row of tiles at a time) and streamed to the writers, so memory
+// stays bounded at any size up to 16384x16384. With render.samples > 1 the
+// samples are rendered pass by pass and the beauty image is rewritten after
+// each pass, so a stopped render leaves the best image so far.
+#include <sdfrt/renderer.hpp>
+
+#include <atomic>
+#include <string>
+#include <vector>
+
+namespace sdfc::cli {
+
+struct OfflineOutput {
+  std::string beauty;              // PNG path
+  int bit_depth = 8;               // 8 or 16
+  std::vector<std::string> aovs;   // of kAovNames
+  bool quiet = false;
+};
+
+// The AOVs --aov accepts, and the kernel planes each one reads.
+inline const std::vector<std::string> kAovNames = {"depth", "normal", "steps", "material"};
+
+// "<dir>/<stem>.<aov>.pfm" beside the beauty image.
+std::string aov_path(const std::string& beauty, const std::string& aov);
+
+struct OfflineFrame {
+  std::vector<float> frame;  // the frame block (frame_params)
+  int width = 0, height = 0;
+  int samples = 1;
+  double gamma = 2.2;
+};
+
+// Renders and writes; returns the paths written. Throws sdfrt::Cancelled
+// (after reporting how many passes the beauty image holds) when cancelled.
+std::vector<std::string> render_offline(sdfrt::Renderer& renderer, const OfflineFrame& f, const OfflineOutput& out,
+                                        int tile, std::atomic<bool>* cancel);
+
+// Frame numbers from --frames: "N", "A:B" (inclusive) or "A:B:STEP".
+// Throws std::invalid_argument with what was expected.
+std::vector<int> parse_frames(const std::string& spec);
+
+// Expands the one printf-style integer field ("%d", "%04d") of a sequence
+// pattern; throws std::invalid_argument if there is none or more than one.
+std::string frame_path(const std::string& pattern, int frame);
+bool has_frame_field(const std::string& pattern);
+
+}  // namespace sdfc::cli
