@@ -5,7 +5,10 @@
 #include <algorithm>
 #include <atomic>
 #include <csignal>
+#include <fstream>
 #include <iostream>
+#include <sstream>
+#include <unistd.h>
 #include <sdfrt/device.hpp>
 #include <sdfrt/errors.hpp>
 #include <sdfrt/image_io.hpp>
@@ -23,6 +26,18 @@ namespace {
 std::atomic<bool> g_cancel{false};
 extern "C" void on_sigint(int) { g_cancel = true; }
 
+// PoCL calls abort() when it cannot write its own kernel cache (a full disk,
+// `ulimit -f`): say what probably happened, then die as before.
+extern "C" void on_driver_abort(int) {
+  static const char msg[] =
+      "sdfc: the OpenCL driver aborted. With PoCL this usually means it could not write its kernel cache "
+      "(full disk or file size limit; the cache is in $POCL_CACHE_DIR or ~/.cache/pocl)\n";
+  ssize_t ignored = write(2, msg, sizeof msg - 1);
+  (void)ignored;
+  std::signal(SIGABRT, SIG_DFL);
+  std::raise(SIGABRT);
+}
+
 struct RenderArgs {
   SceneArgs scene;
   std::string output;
@@ -32,7 +47,38 @@ struct RenderArgs {
   int tile = 256;
   int repeat = 0;
   bool quiet = false;
+  bool keep_partial = false;
+  std::string kernel_file;  // a hand-edited kernel to build instead of the generated one
 };
+
+std::string read_kernel_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::invalid_argument(fmt::format("--kernel: cannot read {}", path));
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// The whole image lives in host memory (the device only holds one tile), so
+// refuse sizes the machine cannot hold before allocating anything.
+void check_host_memory(int w, int h, size_t planes) {
+  const double bytes = double(w) * double(h) * double(planes) * sizeof(float);
+  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+  if (pages <= 0 || page <= 0) return;
+  const double usable = 0.75 * double(pages) * double(page);
+  if (bytes > usable)
+    throw sdfrt::DeviceError(fmt::format("a {}x{} image with {} planes needs {:.1f} GiB of memory, more than this "
+                                         "machine can give ({:.1f} GiB); render a smaller image",
+                                         w, h, planes, bytes / 1073741824.0, usable / 1073741824.0));
+}
+
+// OUT.png -> OUT.partial.png
+std::string partial_path(const std::string& out) {
+  auto dot = out.rfind('.');
+  auto slash = out.rfind('/');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return out + ".partial";
+  return out.substr(0, dot) + ".partial" + out.substr(dot);
+}
 
 int run_render(RenderArgs a) {
   // --width/--height are overrides like any other, so they are validated alike.
@@ -41,6 +87,7 @@ int run_render(RenderArgs a) {
   SourceValue doc = load_scene_source(a.scene.path, a.scene.sets);
   ir::Module m = build_module(doc, a.scene.path);
 
+  std::signal(SIGABRT, on_driver_abort);
   sdfrt::Device device = sdfrt::open_device(a.device.empty() ? std::nullopt : std::optional<std::string>(a.device));
   bool cpu = device.info().type == sdfrt::DeviceType::Cpu;
   int width = a.simd_width > 0 ? a.simd_width : default_simd_width(cpu);
@@ -48,6 +95,7 @@ int run_render(RenderArgs a) {
     throw sdfrt::DeviceError(fmt::format("the scene asks for double precision, but {} has no fp64 support",
                                          device.info().device_name));
   codegen::EmittedKernel k = codegen::emit_opencl(m, {width, false});
+  if (!a.kernel_file.empty()) k.source = read_kernel_file(a.kernel_file);
   sdfrt::KernelSpec spec{k.source, k.entry, k.simd_width, k.planes, ""};
   sdfrt::Renderer renderer(device, spec);
   const auto& bs = renderer.build_stats();
@@ -56,12 +104,14 @@ int run_render(RenderArgs a) {
                              device.info().device_name, bs.build_ms, bs.cache_hit ? " (cached)" : "", k.simd_width);
 
   const int w = m.plan.march.width, h = m.plan.march.height;
+  check_host_memory(w, h, k.planes.size());
   std::vector<float> frame = codegen::frame_params(m.plan, w, h, 0.0);
   std::signal(SIGINT, on_sigint);
   sdfrt::RenderOptions opt;
   opt.tile_width = opt.tile_height = a.tile;
   opt.cancel = &g_cancel;
-  sdfrt::FloatImage img;
+  sdfrt::FloatImage img, partial;
+  if (a.keep_partial) opt.partial = &partial;
   if (a.repeat > 0) {
     // One warm-up frame, then N timed frames; the median is what to quote.
     renderer.render(frame, w, h, opt);
@@ -79,7 +129,15 @@ int run_render(RenderArgs a) {
     sdfrt::ProgressBar bar("tiles");
     if (!a.quiet) opt.progress = bar.callback();
     sdfrt::RenderStats st;
-    img = renderer.render(frame, w, h, opt, &st);
+    try {
+      img = renderer.render(frame, w, h, opt, &st);
+    } catch (const sdfrt::Cancelled&) {
+      bar.finish();
+      // The final name is never touched; the tiles done so far go to a
+      // separate file only when asked for.
+      if (a.keep_partial) std::cerr << "sdfc: partial image: " << sdfrt::write_png(partial_path(a.output), partial).path << "\n";
+      throw;
+    }
     bar.finish();
     if (!a.quiet) std::cerr << fmt::format("rendered {}x{} in {:.0f} ms\n", w, h, st.total_ms);
   }
@@ -107,6 +165,11 @@ Action add_render(CLI::App& app) {
   cmd->add_option("--repeat", a->repeat, "Render one warm-up and N timed frames; print each time and the median")
       ->check(CLI::Range(1, 1000));
   cmd->add_flag("-q,--quiet", a->quiet, "No progress or timing on stderr");
+  cmd->add_flag("--keep-partial", a->keep_partial,
+                "On Ctrl-C, write the tiles done so far to OUT.partial.png (OUT.png is never written then)");
+  cmd->add_option("--kernel", a->kernel_file,
+                  "Build this OpenCL file instead of the generated kernel (a hand-edited 'sdfc compile' output "
+                  "for the same scene and --simd-width)");
   return [a] { return run_render(*a); };
 }
 

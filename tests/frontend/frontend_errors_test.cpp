@@ -1,4 +1,4 @@
-// Every class of scene mistake gives the right message at the right place.
+// Diagnostics of the front end: their format, several at once, hints.
 #include <gtest/gtest.h>
 
 #include "scene_text.hpp"
@@ -8,83 +8,8 @@ namespace {
 
 using test::errors_of;
 
-struct Case {
-  const char* name;
-  const char* scene;
-  int line, column;
-  const char* message;  // fragment of the message
-  const char* hint;     // fragment of the hint ("" = any)
-};
-
-const Case kCases[] = {
-    {"unknown_kind", "scene:\n  union:\n    - sphre: {radius: 1}\n", 3, 7, "unknown node kind 'sphre'", "did you mean 'sphere'?"},
-    {"unknown_top_key", "camrea: {fov: 40}\nscene: {sphere: {radius: 1}}\n", 1, 1, "unknown key 'camrea'", "did you mean 'camera'?"},
-    {"unknown_param", "scene: {sphere: {raduis: 1}}\n", 1, 18, "unknown key 'raduis' in sphere", "did you mean 'radius'?"},
-    {"string_for_number", "scene: {sphere: {radius: abc}}\n", 1, 26, "sphere.radius: expected a number, got 'abc'", ""},
-    {"quoted_number", "scene: {sphere: {radius: \"1\"}}\n", 1, 26, "expected a number", "remove the quotes"},
-    {"vec2_for_vec3", "scene: {sphere: {radius: 1}, translate: [1, 2]}\n", 1, 41, "expected a list of 3 numbers", ""},
-    {"negative_size", "scene: {box: {size: [1, -2, 1]}}\n", 1, 25, "box.size: expected a positive number, got -2", ""},
-    {"zero_radius", "scene: {sphere: {radius: 0}}\n", 1, 26, "expected a positive number, got 0", ""},
-    {"nan", "scene: {sphere: {radius: .nan}}\n", 1, 26, "is not a finite number", ""},
-    {"inf", "scene: {sphere: {radius: .inf}}\n", 1, 26, "is not a finite number", ""},
-    {"huge", "scene: {sphere: {radius: 1e300}}\n", 1, 26, "too large", ""},
-    {"two_kinds", "scene: {sphere: {radius: 1}, box: {size: [1, 1, 1]}}\n", 1, 30, "has 'sphere' and 'box'", "union"},
-    {"no_kind", "scene: {translate: [0, 0, 1]}\n", 1, 8, "modifiers but no kind", ""},
-    {"missing_scene", "camera: {fov: 40}\n", 1, 1, "missing required key 'scene'", ""},
-    {"unknown_material", "materials: {bone: {color: [1, 1, 1]}}\nscene: {sphere: {radius: 1}, material: boen}\n", 2, 40,
-     "unknown material 'boen'", "did you mean 'bone'?"},
-    {"no_materials", "scene: {sphere: {radius: 1}, material: gold}\n", 1, 40, "unknown material 'gold'", "defines no materials"},
-    {"empty_union", "scene: {union: []}\n", 1, 16, "union: the list is empty", ""},
-    {"union_not_list", "scene: {union: {sphere: {radius: 1}}}\n", 1, 16, "expected a list of geometry nodes", ""},
-    {"camera_at_target", "camera: {position: [1, 1, 1], target: [1, 1, 1]}\nscene: {sphere: {radius: 1}}\n", 1, 9,
-     "target is at the camera position", ""},
-    {"up_parallel", "camera: {position: [0, 0, 5], target: [0, 0, 0], up: [0, 0, 1]}\nscene: {sphere: {radius: 1}}\n", 1, 54,
-     "up is parallel to the view direction", ""},
-    {"zero_axis", "scene: {sphere: {radius: 1}, rotate: {axis: [0, 0, 0], degrees: 10}}\n", 1, 45, "must not have zero length", ""},
-    {"zero_light_direction", "lights:\n  - directional: {direction: [0, 0, 0]}\nscene: {sphere: {radius: 1}}\n", 2, 30,
-     "must not have zero length", ""},
-    {"unknown_light", "lights:\n  - spot: {position: [0, 0, 1]}\nscene: {sphere: {radius: 1}}\n", 2, 5, "unknown light kind 'spot'", ""},
-    {"point_without_position", "lights:\n  - point: {intensity: 2}\nscene: {sphere: {radius: 1}}\n", 2, 12,
-     "missing required key 'position'", ""},
-    {"width_zero", "render: {width: 0}\nscene: {sphere: {radius: 1}}\n", 1, 17, "expected a whole number from 1 to 16384", ""},
-    {"width_huge", "render: {width: 20000}\nscene: {sphere: {radius: 1}}\n", 1, 17, "from 1 to 16384, got 20000", ""},
-    {"width_fraction", "render: {width: 12.5}\nscene: {sphere: {radius: 1}}\n", 1, 17, "expected a whole number", ""},
-    {"bad_precision", "render: {precision: dubble}\nscene: {sphere: {radius: 1}}\n", 1, 21, "expected one of float, double",
-     "did you mean 'double'?"},
-    {"too_many_iterations", "scene: {mandelbulb: {iterations: 5000}}\n", 1, 34, "from 1 to 1000", ""},
-    {"box_radius_too_big", "scene: {box: {size: [1, 1, 1], radius: 0.6}}\n", 1, 40, "more than half the smallest side", ""},
-    {"smooth_without_children", "scene: {smooth_union: {radius: 0.1}}\n", 1, 23, "missing required key 'children'", ""},
-    {"light_list_not_map", "lights: {directional: {}}\nscene: {sphere: {radius: 1}}\n", 1, 9, "expected a list of lights", ""},
-    {"scene_is_scalar", "scene: 42\n", 1, 8, "expected a geometry node", ""},
-    {"document_is_list", "- sphere: {radius: 1}\n", 1, 1, "a scene file is a map of sections", ""},
-    {"yaml_unclosed", "scene: {sphere: {radius: 1}\n", 2, 1, "YAML syntax error", ""},
-    {"yaml_tab", "scene:\n\tsphere: {radius: 1}\n", 2, 1, "a tab in the indentation", "use spaces"},
-    {"duplicate_key", "scene: {sphere: {radius: 1, radius: 2}}\n", 1, 29, "duplicate key 'radius'", ""},
-    {"empty", "", 1, 1, "the scene file is empty", ""},
-    {"binary", "scene: \x01\x02\x03\n", 1, 8, "not a text file", ""},
-};
-
-class SceneErrors : public ::testing::TestWithParam<Case> {};
-
-TEST_P(SceneErrors, ReportsMessageAndLocation) {
-  const Case& c = GetParam();
-  std::vector<Diagnostic> diags;
-  try {
-    diags = errors_of(c.scene);
-  } catch (const SceneError& e) {  // errors thrown by the YAML loader itself
-    diags = e.diagnostics();
-  }
-  ASSERT_FALSE(diags.empty()) << "scene was accepted:\n" << c.scene;
-  const Diagnostic& d = diags.front();
-  EXPECT_NE(d.message.find(c.message), std::string::npos) << "got: " << d.str();
-  EXPECT_NE(d.hint.find(c.hint), std::string::npos) << "got hint: " << d.hint;
-  EXPECT_EQ(d.loc.line, c.line) << d.str();
-  EXPECT_EQ(d.loc.column, c.column) << d.str();
-  EXPECT_EQ(d.loc.file ? *d.loc.file : "", "t.yaml");
-}
-
-INSTANTIATE_TEST_SUITE_P(AllClasses, SceneErrors, ::testing::ValuesIn(kCases),
-                         [](const auto& info) { return std::string(info.param.name); });
+// One file per mistake lives in tests/bad_scenes/ (run through `sdfc check`);
+// these tests cover what a single file cannot show.
 
 TEST(SceneErrors, FormatsAsFileLineColumn) {
   auto diags = errors_of("scene:\n  union:\n    - sphre: {radius: 1}\n");
