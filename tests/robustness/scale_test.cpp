@@ -78,15 +78,38 @@ TEST(Scale, AliasBombIsRefusedQuickly) {
   }
 }
 
-TEST(Scale, TenThousandSpheresCompileAndEvaluate) {
-  SourceValue doc = load_yaml_text(wide_union(10000), "wide.yaml");
+TEST(Scale, TenThousandSpheresAreRefusedWithTheLimit) {
+  ScratchDir dir;
+  RunResult r = run_sdfc("check " + dir.write("wide.yaml", wide_union(10000)));
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.err.find("wide.yaml:2:3: error: the scene makes a kernel of 20000 node evaluations, more than the "
+                       "limit of 4096"),
+            std::string::npos)
+      << r.err;
+}
+
+TEST(Scale, TwoThousandSpheresCompileAndEvaluate) {
+  SourceValue doc = load_yaml_text(wide_union(2000), "wide.yaml");
   ir::Module m = build_module(doc, "wide.yaml");
-  EXPECT_GE(ir::count_nodes(m), 10000u);
+  // 1999 translations (the one by [0, 0, 0] folds away) of one shared sphere, one union.
+  EXPECT_EQ(ir::count_nodes(m), 2001u);
   auto k = codegen::emit_opencl(m, {16, false});
   EXPECT_GT(k.source.size(), 100000u);
-  // The sphere at grid cell (37, 42) is 0.4 across: its centre is 0.4 inside.
-  EXPECT_NEAR(reference::distance(m, {37, 42, 0}), -0.4, 1e-12);
-  EXPECT_NEAR(reference::distance(m, {37, 42, 1.4}), 1.0, 1e-12);
+  // The sphere at grid cell (37, 12) is 0.4 across: its centre is 0.4 inside.
+  EXPECT_NEAR(reference::distance(m, {37, 12, 0}), -0.4, 1e-12);
+  EXPECT_NEAR(reference::distance(m, {37, 12, 1.4}), 1.0, 1e-12);
+}
+
+TEST(Scale, AliasTreesCountEveryUseTowardsTheLimit) {
+  // 13 levels of doubling: 16 384 leaves from a 15-line file.
+  std::string s = "scene:\n  union:\n    - &a0 {sphere: {radius: 1}}\n";
+  for (int i = 1; i <= 13; ++i)
+    s += "    - &a" + std::to_string(i) + " {union: [*a" + std::to_string(i - 1) + ", {union: [*a" +
+         std::to_string(i - 1) + "], translate: [1, 0, 0]}]}\n";
+  ScratchDir dir;
+  RunResult r = run_sdfc("check " + dir.write("tree.yaml", s));
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.err.find("more than the limit of 4096"), std::string::npos) << r.err;
 }
 
 }  // namespace
