@@ -16,9 +16,9 @@ namespace {
 constexpr int kMaxDepth = 200;
 constexpr const char* kFlattenHint = "flatten it: a union takes any number of children";
 // Aliases are copied where they are used, so a few lines of nested aliases
-// ("billion laughs") could expand to billions of values; a scene of 100 000
-// primitives stays well under this.
-constexpr size_t kMaxValues = 2'000'000;
+// ("billion laughs") could expand to billions of values. A scene at the
+// kernel size limit (4096 node evaluations) holds far fewer.
+constexpr size_t kMaxValues = 200'000;
 
 struct Budget {
   size_t values = 0;
