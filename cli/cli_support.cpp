@@ -24,7 +24,16 @@ void write_text_output(const std::string& path, const std::string& text) {
     std::cout << text << std::flush;
     return;
   }
-  std::filesystem::path target(path);
+  std::error_code ec;
+  auto st = std::filesystem::status(path, ec);
+  if (!ec && std::filesystem::exists(st) && !std::filesystem::is_regular_file(st)) {
+    // /dev/null, a FIFO, a terminal: nothing to protect by renaming, write through.
+    FILE* f = std::fopen(path.c_str(), "wb");
+    bool ok = f && std::fwrite(text.data(), 1, text.size(), f) == text.size();
+    if (f) ok = std::fclose(f) == 0 && ok;
+    if (!ok) throw sdfrt::IoError(fmt::format("cannot write {}: {}", path, std::strerror(errno)), path, errno);
+    return;
+  }
   std::string tmpl = path + ".tmp-XXXXXX";
   std::vector<char> name(tmpl.begin(), tmpl.end());
   name.push_back('\0');

@@ -30,13 +30,24 @@ int run_check(const SceneArgs& args) {
   fmt::print("geometry: {} IR nodes ({} as written), class {}, L = {}, cost ~{:.0f}\n", ir::count_nodes(m),
              lowered_nodes, ir::to_string(root.cls), root.lipschitz, root.cost);
   fmt::print("  bounds {}\n", box_text(root.bounds));
+  // Every node with its class and Lipschitz constant, and where the kernel
+  // divides by L (issue 9: the correction is local to that subtree).
+  int corrected = 0, steep = 0;
   for (ir::NodeId id : g.postorder(m.root)) {
     const ir::Node& n = g.node(id);
-    auto cat = ir::info(n.kind).category;
-    if (cat != ir::Category::Primitive && cat != ir::Category::Fractal) continue;
+    if (n.kind == ir::Kind::Material) continue;
     std::string at = n.loc.line > 0 ? fmt::format("line {}", n.loc.line) : "";
-    fmt::print("  {:<12} {:<8} L = {:<4} {}\n", ir::info(n.kind).name, ir::to_string(n.props.cls), n.props.lipschitz, at);
+    std::string note;
+    if (n.props.lipschitz > 1 + 1e-9) {
+      ++steep;
+      corrected += n.props.corrected;
+      note = n.props.corrected ? "  corrected: distance / L here" : "  NOT corrected (render.lipschitz_correction: false)";
+    }
+    fmt::print("  {:<20} {:<9} L = {:<6.4g} {}{}\n", ir::info(n.kind).name, ir::to_string(n.props.cls), n.props.lipschitz,
+               at, note);
   }
+  if (steep > 0)
+    fmt::print("  Lipschitz correction: {} of {} nodes with L > 1 divided locally\n", corrected, steep);
   const auto& p = m.plan;
   std::string lights;
   for (const auto& l : p.lights)

@@ -5,6 +5,9 @@
 #include <chrono>
 #include <iostream>
 
+#include <sdfrt/device.hpp>
+#include <sdfrt/program.hpp>
+
 #include "cli_support.hpp"
 #include "commands.hpp"
 #include "sdfc/compile.hpp"
@@ -21,6 +24,8 @@ struct CompileArgs {
   std::string output = "-";
   int simd_width = 0;
   bool stats = false;
+  bool build = false;
+  std::string device;
 };
 
 double ms(std::chrono::steady_clock::time_point t0) {
@@ -55,13 +60,13 @@ int run_compile(const CompileArgs& a) {
       if (d == "all" || d == pass) return true;
     return false;
   };
-  CompileTimings t;
+  CompileTimings tm;
   ir::Module m = build_module(
       doc, a.scene.path,
       [&](std::string_view pass, const ir::Module& mod) {
         if (wants(pass)) out += fmt::format("// ---- IR after {} ({} nodes) ----\n{}", pass, ir::count_nodes(mod), ir::print(mod));
       },
-      &t);
+      &tm);
   auto t1 = std::chrono::steady_clock::now();
   codegen::EmittedKernel k;
   if (a.emit == "cl" || a.stats) k = codegen::emit_opencl(m, {a.simd_width > 0 ? a.simd_width : default_simd_width(true), false});
@@ -69,12 +74,23 @@ int run_compile(const CompileArgs& a) {
   if (a.emit == "ir" && a.dump_after.empty()) out += ir::print(m);
   if (a.emit == "cl") out += k.source;
   write_text_output(a.output, out);
-  if (a.stats)
-    std::cerr << fmt::format("parse {:.2f} ms, lower {:.2f} ms, passes {:.2f} ms, emit {:.2f} ms; kernel {} bytes, {} lines, "
-                             "{} IR nodes, {} stdlib functions\n",
-                             parse_ms, t.lower_ms, t.passes_ms, emit_ms, k.source.size(),
-                             std::count(k.source.begin(), k.source.end(), '\n'), ir::count_nodes(m),
-                             k.stdlib_functions.size());
+  if (a.stats) {
+    std::string t = fmt::format("{:<26}{:>10.3f} ms\n", "parse", parse_ms);
+    t += fmt::format("{:<26}{:>10.3f} ms\n", "lower", tm.lower_ms);
+    for (const auto& p : tm.per_pass) t += fmt::format("  {:<24}{:>10.3f} ms\n", p.pass, p.ms);
+    t += fmt::format("{:<26}{:>10.3f} ms\n", "emit", emit_ms);
+    t += fmt::format("{:<26}{:>10.3f} ms\n", "front end + passes + emit", parse_ms + tm.lower_ms + tm.passes_ms + emit_ms);
+    if (a.build) {
+      sdfrt::Device device = sdfrt::open_device(a.device.empty() ? std::nullopt : std::optional<std::string>(a.device));
+      sdfrt::BuildStats bs;
+      sdfrt::build_program(device, k.source, "", &bs);
+      t += fmt::format("{:<26}{:>10.3f} ms{}\n", "opencl build", bs.build_ms, bs.cache_hit ? " (from the binary cache)" : "");
+    }
+    t += fmt::format("kernel: {} bytes, {} lines, SIMD width {}, {} IR nodes, {} stdlib functions\n", k.source.size(),
+                     std::count(k.source.begin(), k.source.end(), '\n'), k.simd_width, ir::count_nodes(m),
+                     k.stdlib_functions.size());
+    std::cerr << t;
+  }
   return kOk;
 }
 
@@ -92,6 +108,9 @@ Action add_compile(CLI::App& app) {
                                                  "default: the width render picks for a CPU device")
       ->check(CLI::IsMember({1, 2, 4, 8, 16}));
   cmd->add_flag("--stats", a->stats, "Print the time of each stage and the kernel's size on stderr");
+  cmd->add_flag("--build", a->build, "With --stats: also build the kernel on the device and time it "
+                                     "(SDFC_KERNEL_CACHE=0 for a cold build)");
+  cmd->add_option("--device", a->device, "Device for --build (see 'sdfc devices')");
   return [a] { return run_compile(*a); };
 }
 

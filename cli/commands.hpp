@@ -13,5 +13,8 @@ Action add_check(CLI::App& app);
 Action add_compile(CLI::App& app);
 Action add_render(CLI::App& app);
 Action add_devices(CLI::App& app);
+Action add_view(CLI::App& app);
+Action add_audit(CLI::App& app);
+Action add_compare(CLI::App& app);
 
 }  // namespace sdfc::cli

@@ -32,6 +32,9 @@ int main(int argc, char** argv) {
   reg(add_compile);
   reg(add_render);
   reg(add_devices);
+  reg(add_view);
+  reg(add_audit);
+  reg(add_compare);
 
   try {
     app.parse(argc, argv);

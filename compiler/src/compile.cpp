@@ -53,7 +53,7 @@ ir::Module build_module(const SourceValue& doc, const std::string& source_name, 
   if (t) t->lower_ms = ms_since(t0);
   if (after) after("lower", m);
   auto t1 = std::chrono::steady_clock::now();
-  m = passes::run_pipeline(std::move(m), after);
+  m = passes::run_pipeline(std::move(m), after, t ? &t->per_pass : nullptr);
   if (t) t->passes_ms = ms_since(t1);
   check_kernel_size(m);
   return m;

@@ -100,11 +100,11 @@ TEST(Cli, CompileShowsEveryStage) {
   Result ir = sdfc("compile examples/mandelbulb.yaml --emit ir");
   EXPECT_NE(ir.out.find("= mandelbulb power=8 iterations=10 bailout=2"), std::string::npos) << ir.out;
   Result all = sdfc("compile examples/mandelbulb.yaml --emit ir --dump-after all");
-  for (const char* pass : {"lower", "verify", "fold_constants", "canonicalise", "cse", "eliminate_dead", "infer_properties"})
+  for (const char* pass : {"lower", "verify", "fold_constants", "canonicalise", "cse", "eliminate_dead", "infer_properties", "insert_bounding_volumes"})
     EXPECT_NE(all.out.find(std::string("// ---- IR after ") + pass + " "), std::string::npos) << pass;
   Result cl = sdfc("compile examples/mandelbulb.yaml --emit cl --simd-width 1");
   EXPECT_NE(cl.out.find("__kernel void sdfc_render("), std::string::npos);
-  EXPECT_NE(cl.out.find("de_mandelbulb(p"), std::string::npos);
+  EXPECT_NE(cl.out.find("de_mandelbulb_int(p"), std::string::npos);
 }
 
 TEST(Cli, CompileWritesAFile) {
@@ -128,6 +128,25 @@ TEST(Cli, DevicesListsPocl) {
   Result r = sdfc("devices");
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("0:0"), std::string::npos) << r.out;
+}
+
+}  // namespace
+
+namespace {
+
+TEST(Cli, AuditRunsOnAScene) {
+  Result r = sdfc("audit examples/primitives.yaml --rays 16 --lines 8");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("node"), std::string::npos);
+  EXPECT_NE(r.out.find("torus"), std::string::npos) << r.out;
+  Result j = sdfc("audit examples/primitives.yaml --rays 16 --lines 8 --json");
+  EXPECT_EQ(j.out.rfind("{\"nodes\": [", 0), 0u) << j.out;
+  std::string steep = write_scene("steep.yaml",
+                                  "render: {lipschitz_correction: false}\n"
+                                  "scene: {box: {size: [1.0, 0.3, 2.0]}, twist: {axis: z, rate: 3}}\n");
+  Result s = sdfc("audit " + steep + " --strict");
+  EXPECT_EQ(s.code, 1) << s.out << s.err;
+  EXPECT_NE(s.out.find("WARNING"), std::string::npos) << s.out;
 }
 
 }  // namespace

@@ -117,6 +117,52 @@ TEST(InferProperties, BoundsAndClasses) {
   EXPECT_FALSE(plane.graph->node(plane.root).props.bounds.finite());
 }
 
+TEST(InsertBoundingVolumes, WrapsExpensiveUnionChildrenOnly) {
+  ir::Module m = passes::run_pipeline(test::lower_text(
+      "scene:\n  union:\n    - mandelbulb: {power: 8}\n    - {sphere: {radius: 0.5}, translate: [3, 0, 0]}\n"
+      "    - plane: {normal: [0, 0, 1], offset: -2}\n"));
+  // The fractal is wrapped; the cheap sphere is not, nor the unbounded root.
+  EXPECT_EQ(count_kind(m, ir::Kind::Bounded), 1u);
+  const ir::Node& u = m.graph->node(m.root);
+  ASSERT_EQ(u.kind, ir::Kind::Union);
+  size_t wrapped = 0;
+  for (ir::NodeId c : u.children) {
+    const ir::Node& k = m.graph->node(c);
+    if (k.kind != ir::Kind::Bounded) continue;
+    ++wrapped;
+    EXPECT_EQ(m.graph->node(k.children[0]).kind, ir::Kind::Mandelbulb);
+  }
+  EXPECT_EQ(wrapped, 1u);
+}
+
+// Built from exact primitives, so "lower bound" can be checked against the
+// true distance: a smooth union of spheres is costly enough to be wrapped.
+TEST(InsertBoundingVolumes, KeepsTheFieldALowerBoundAndExactNearby) {
+  std::string blob = "    - smooth_union:\n        radius: 0.2\n        children:\n";
+  for (int i = 0; i < 12; ++i)
+    blob += "          - {sphere: {radius: 0.3}, translate: [" + std::to_string(0.25 * (i % 4)) + ", " +
+            std::to_string(0.25 * (i / 4)) + ", 0]}\n";
+  std::string scene = "scene:\n  union:\n" + blob + "    - {box: {size: [0.5, 0.5, 0.5]}, translate: [3, 0, 0]}\n";
+  ir::Module m = test::lower_text(scene);
+  for (const auto& pass : passes::pipeline())
+    if (pass.name != "insert_bounding_volumes") m = pass.run(std::move(m));
+  ir::Module bounded = passes::insert_bounding_volumes(m);
+  EXPECT_EQ(count_kind(bounded, ir::Kind::Bounded), 2u);  // the blob and the whole scene
+  size_t skipped = 0;
+  for (double x = -3; x <= 5; x += 0.31)
+    for (double y = -3; y <= 3; y += 0.37)
+      for (double z = -3; z <= 3; z += 0.41) {
+        reference::Vec3 p{x, y, z};
+        double exact = reference::distance(m, p), fast = reference::distance(bounded, p);
+        ASSERT_LE(fast, exact + 1e-12) << x << " " << y << " " << z;  // still a lower bound
+        if (std::fabs(exact) < 0.2) {
+          ASSERT_DOUBLE_EQ(fast, exact) << "changed near a surface";
+        }
+        skipped += fast < exact;
+      }
+  EXPECT_GT(skipped, 100u);  // the box really stands in somewhere
+}
+
 TEST(Verify, RejectsBrokenIr) {
   ir::Module m = test::lower_text("scene: {sphere: {radius: 1}}\n");
   EXPECT_NO_THROW(passes::verify(m));
@@ -131,7 +177,7 @@ TEST(Pipeline, EveryPassIsObserved) {
                        [&](std::string_view name, const ir::Module&) { seen.emplace_back(name); });
   ASSERT_EQ(seen.size(), passes::pipeline().size());
   EXPECT_EQ(seen.front(), "verify");
-  EXPECT_EQ(seen.back(), "infer_properties");
+  EXPECT_EQ(seen.back(), "insert_bounding_volumes");
 }
 
 }  // namespace

@@ -12,6 +12,7 @@ namespace sdfc {
 
 struct CompileTimings {
   double parse_ms = 0, lower_ms = 0, passes_ms = 0, emit_ms = 0;
+  std::vector<passes::PassTiming> per_pass;
 };
 
 // Loads a scene file and applies --set overrides.

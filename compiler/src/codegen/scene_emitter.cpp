@@ -5,7 +5,12 @@
 
 #include <fmt/format.h>
 
-#include "sdfc/ir/fractal_math.hpp"
+#include <algorithm>
+#include <cmath>
+
+#include "catalogue_emitter.hpp"
+#include "fractal_emitter.hpp"
+#include "sdfc/expr/expr.hpp"
 
 namespace sdfc::codegen::detail {
 
@@ -64,7 +69,33 @@ class SceneEmitter {
     return {d, with_mat_ ? lit_.typed(0) : ""};
   }
 
+  // A node's distance, divided by its Lipschitz constant where the
+  // properties pass marked it for correction (issue 9).
   Value emit(NodeId id, const std::string& p) {
+    Value v = emit_node(id, p);
+    const ir::Node& n = g_.node(id);
+    if (!n.props.corrected) return v;
+    const ir::Box3& r = n.props.lipschitz_region;
+    std::string d = var("d");
+    std::string scaled = fmt::format("{} * {}", v.d, lit_.real(1.0 / n.props.lipschitz));
+    if (!r.finite()) {
+      w_.line(fmt::format("real {} = {};  // L = {:.4g} > 1: divide by L", d, scaled, n.props.lipschitz));
+      return {d, v.mat};
+    }
+    // L holds inside the region only; outside it the distance to the node's
+    // bounds is the bound (the surface lies inside them, at least the
+    // region's margin away).
+    std::string b = var("b"), o = var("o");
+    call("dm_axis_helpers");
+    w_.line(fmt::format("real {} = dm_box_outside({}, {}, {});  // L = {:.4g} > 1 inside this box", o, p,
+                        lit_.vec3(r.lo), lit_.vec3(r.hi), n.props.lipschitz));
+    w_.line(fmt::format("real {} = dm_box_outside({}, {}, {});  // the node's bounds", b, p,
+                        lit_.vec3(n.props.bounds.lo), lit_.vec3(n.props.bounds.hi)));
+    w_.line(fmt::format("real {} = SEL({}, {}, {} > 0.0f);  // divide by L inside, bounds distance outside", d, scaled, b, o));
+    return {d, v.mat};
+  }
+
+  Value emit_node(NodeId id, const std::string& p) {
     const ir::Node& n = g_.node(id);
     const auto& q = n.params;
     auto r = [&](size_t i) { return lit_.real(q[i]); };
@@ -79,9 +110,6 @@ class SceneEmitter {
       case Kind::Capsule:
         return leaf(n, fmt::format("{}({}, {}, {}, {})", call("sd_capsule"), p, lit_.vec3({q[0], q[1], q[2]}),
                                    lit_.vec3({q[3], q[4], q[5]}), r(6)));
-      case Kind::Mandelbulb:
-        return leaf(n, fmt::format("{}({}, {}, {}, {}, {})", call("de_mandelbulb"), p, r(0), int(q[1]), r(2),
-                                   lit_.real(ir::mandelbulb_set_radius(q[0]))));
       case Kind::Translate: {
         std::string p2 = var("p");
         w_.line(fmt::format("vec3 {} = v3_sub({}, {});  // {}", p2, p, lit_.vec3({q[0], q[1], q[2]}), describe(n)));
@@ -102,6 +130,24 @@ class SceneEmitter {
         w_.line(fmt::format("real {} = {} * {};  // undo the scale on the distance", d, c.d, r(0)));
         return {d, c.mat};
       }
+      case Kind::Bounded: {
+        // Skip the subtree while every lane is farther from its box than the
+        // margin: the box distance is a lower bound of the subtree's.
+        ir::Vec3d c, h;
+        for (int i = 0; i < 3; ++i) c[i] = 0.5 * (q[i] + q[i + 3]), h[i] = 0.5 * (q[i + 3] - q[i]);
+        std::string b = var("b"), d = var("d"), m = with_mat_ ? var("m") : "";
+        w_.line(fmt::format("real {} = {}(v3_sub({}, {}), {}, {});  // bounding box{}", b, call("sd_box"), p, lit_.vec3(c),
+                            lit_.vec3(h), lit_.real(0), where(n)));
+        w_.line(fmt::format("real {} = {};", d, b));
+        if (with_mat_) w_.line(fmt::format("real {} = {};", m, lit_.typed(0)));
+        w_.line(fmt::format("if (M_ANY({} <= {}))", b, r(6)));
+        w_.open("{");
+        Value inner = emit(n.children[0], p);
+        w_.line(fmt::format("{} = SEL({}, {}, {} > {});", d, inner.d, b, b, r(6)));
+        if (with_mat_) w_.line(fmt::format("{} = SEL({}, {}, {} > {});", m, inner.mat, lit_.typed(0), b, r(6)));
+        w_.close("}");
+        return {d, m};
+      }
       case Kind::Material: {
         Value c = emit(n.children[0], p);
         if (!with_mat_) return c;
@@ -112,7 +158,77 @@ class SceneEmitter {
         w_.line(fmt::format("real {} = SEL({}, {}, {} != 0.0f);  // {}", m, id, c.mat, c.mat, describe(n)));
         return {c.d, m};
       }
-      default: return combine(n, p);
+      // ---- issue 9: domain operations ----
+      case Kind::Repeat: return repeat(n, p);
+      case Kind::PolarRepeat: {
+        std::string near = var("p"), own = var("p");
+        w_.line(fmt::format("vec3 {};  // {}", near, describe(n)));
+        w_.line(fmt::format("vec3 {} = {}({}, {}, {}, &{});", own, call("dm_polar"), p, int(q[0]), r(1), near));
+        return cells(n, {own, near});
+      }
+      case Kind::Mirror: {
+        std::string p2 = var("p");
+        auto axis = [&](int i, const char* c) { return q[i] != 0 ? fmt::format("fabs({}.{})", p, c) : p + "." + c; };
+        w_.line(fmt::format("vec3 {} = v3({}, {}, {});  // {}", p2, axis(0, "x"), axis(1, "y"), axis(2, "z"), describe(n)));
+        return emit(n.children[0], p2);
+      }
+      case Kind::Symmetry: {
+        std::string p2 = var("p");
+        std::string fn = q[0] != 0 ? "dm_symmetry_octahedral" : "dm_symmetry_tetrahedral";
+        w_.line(fmt::format("vec3 {} = {}({});  // {}", p2, call(fn), p, describe(n)));
+        return emit(n.children[0], p2);
+      }
+      case Kind::Twist:
+      case Kind::Bend: {
+        std::string p2 = var("p");
+        std::string fn = n.kind == Kind::Twist ? "dm_twist" : "dm_bend";
+        w_.line(fmt::format("vec3 {} = {}({}, {}, {});  // {}", p2, call(fn), p, int(q[0]), r(1), describe(n)));
+        return emit(n.children[0], p2);
+      }
+      case Kind::Elongate: {
+        std::string p2 = var("p");
+        auto axis = [&](int i, const char* c) {
+          return fmt::format("{0}.{1} - clamp({0}.{1}, K({2}), K({3}))", p, c, lit_.real(-q[i]), r(i));
+        };
+        w_.line(fmt::format("vec3 {} = v3({}, {}, {});  // {}", p2, axis(0, "x"), axis(1, "y"), axis(2, "z"), describe(n)));
+        return emit(n.children[0], p2);
+      }
+      case Kind::ScaleXYZ: {
+        std::string p2 = var("p");
+        w_.line(fmt::format("vec3 {} = v3_mul({}, {});  // {}", p2, p, lit_.vec3({1 / q[0], 1 / q[1], 1 / q[2]}), describe(n)));
+        Value c = emit(n.children[0], p2);
+        std::string d = var("d");
+        w_.line(fmt::format("real {} = {} * {};  // the smallest factor keeps it a bound", d, c.d,
+                            lit_.real(std::min({q[0], q[1], q[2]}))));
+        return {d, c.mat};
+      }
+      case Kind::Round:
+      case Kind::Onion:
+      case Kind::Shell: {
+        Value c = emit(n.children[0], p);
+        std::string d = var("d");
+        std::string e = n.kind == Kind::Round   ? fmt::format("{} - {}", c.d, r(0))
+                         : n.kind == Kind::Onion ? fmt::format("fabs({}) - {}", c.d, r(0))
+                                                 : fmt::format("fmax({0}, -{0} - {1})", c.d, r(0));
+        w_.line(fmt::format("real {} = {};  // {}", d, e, describe(n)));
+        return {d, c.mat};
+      }
+      case Kind::Displace: {
+        Value c = emit(n.children[0], p);
+        const expr::ExprPtr& e = g_.expressions.at(size_t(q[0]));
+        std::string body = expr::to_opencl(
+            e, [&](std::string_view v) { return p + "." + std::string(v); }, [&](double x) { return lit_.typed(x); });
+        std::string d = var("d");
+        w_.line(fmt::format("real {} = {} + {};  // displace {}{}", d, c.d, body, expr::to_string(e), where(n)));
+        return {d, c.mat};
+      }
+      default:
+        if (auto e = catalogue_call(n, p, lit_, used_)) return leaf(n, *e);
+        if (is_fractal(n)) {
+          std::string expr = emit_fractal(n, p, lit_, w_, used_);
+          return leaf(n, expr);
+        }
+        return combine(n, p);
     }
   }
 
@@ -151,10 +267,85 @@ class SceneEmitter {
         case Kind::SmoothDifference:
           w_.line(fmt::format("{} = {}({}, {}, {});", d, call("op_smooth_difference"), d, k.d, lit_.real(n.params[0])));
           break;
+        // Blends (issue 9): intersection and difference are the union's dual.
+        case Kind::BlendUnion:
+          if (track) w_.line(fmt::format("{} = SEL({}, {}, {} < {});", m, m, k.mat, k.d, d));
+          w_.line(fmt::format("{} = {};", d, blend(n, d, k.d)));
+          break;
+        case Kind::BlendIntersection:
+          if (track) w_.line(fmt::format("{} = SEL({}, {}, {} > {});", m, m, k.mat, k.d, d));
+          w_.line(fmt::format("{} = -{};", d, blend(n, "-" + d, "-" + k.d)));
+          break;
+        case Kind::BlendDifference:
+          w_.line(fmt::format("{} = -{};", d, blend(n, "-" + d, k.d)));
+          break;
         default: break;
       }
     }
     return {d, with_mat_ ? m : ""};
+  }
+
+  // The union-style blend of a and b for a Blend* node.
+  std::string blend(const ir::Node& n, const std::string& a, const std::string& b) {
+    static const char* fns[] = {"op_blend_cubic", "op_blend_exponential", "op_blend_chamfer",
+                                "op_blend_round", "op_blend_columns",     "op_blend_stairs"};
+    int style = int(n.params[0]);
+    std::string steps = style >= 4 ? ", " + lit_.typed(n.params[2]) : "";
+    return fmt::format("{}({}, {}, {}{})", call(fns[style]), a, b, lit_.typed(n.params[1]), steps);
+  }
+
+  // repeat: the child in the point's own cell and in the neighbouring cell on
+  // each repeated axis (2^k evaluations), so a child that reaches across the
+  // cell border leaves no seam; every other copy is at least
+  // period - reach + |u| away along some axis, which bounds the rest.
+  Value repeat(const ir::Node& n, const std::string& p) {
+    const auto& q = n.params;
+    const ir::Box3& cb = g_.node(n.children[0]).props.bounds;
+    const char* xyz[] = {"x", "y", "z"};
+    std::string own[3], near[3], rest;
+    std::vector<int> axes;
+    w_.line("// " + describe(n));
+    for (int i = 0; i < 3; ++i) {
+      own[i] = p + "." + xyz[i];
+      near[i] = own[i];
+      if (q[3 + i] == 1) continue;
+      axes.push_back(i);
+      own[i] = var("u"), near[i] = var("nb");
+      w_.line(fmt::format("real {};", near[i]));
+      w_.line(fmt::format("real {} = {}({}.{}, {}, {}, &{});", own[i], call("dm_repeat_axis"), p, xyz[i],
+                          lit_.typed(q[i]), lit_.typed(q[3 + i]), near[i]));
+      double reach = std::max(std::fabs(cb.lo[i]), std::fabs(cb.hi[i]));
+      std::string term = fmt::format("{} + fabs({})", lit_.real(q[i] - reach), own[i]);
+      rest = rest.empty() ? term : fmt::format("fmin({}, {})", rest, term);
+    }
+    std::vector<std::string> points;
+    for (int c = 0; c < (1 << axes.size()); ++c) {
+      std::string comp[3] = {own[0], own[1], own[2]};
+      for (size_t a = 0; a < axes.size(); ++a)
+        if (c & (1 << a)) comp[axes[a]] = near[axes[a]];
+      points.push_back(fmt::format("v3({}, {}, {})", comp[0], comp[1], comp[2]));
+    }
+    Value v = cells(n, points);
+    std::string d = var("d");
+    w_.line(fmt::format("real {} = fmin({}, {});  // copies beyond the neighbours are farther", d, v.d, rest));
+    return {d, v.mat};
+  }
+
+  // The minimum of the child over several points (one loop, the child's code once).
+  Value cells(const ir::Node& n, const std::vector<std::string>& points) {
+    std::string d = var("d"), m = with_mat_ ? var("m") : "", c = var("c");
+    w_.line(fmt::format("real {} = {};", d, lit_.typed(1e30)));
+    if (with_mat_) w_.line(fmt::format("real {} = {};", m, lit_.typed(0)));
+    w_.open(fmt::format("for (int {0} = 0; {0} < {1}; ++{0}) {{", c, points.size()));
+    std::string pc = var("p");
+    std::string pick = points.back();
+    for (size_t i = points.size() - 1; i-- > 0;) pick = fmt::format("{} == {} ? {} : {}", c, i, points[i], pick);
+    w_.line(fmt::format("vec3 {} = {};", pc, pick));
+    Value k = emit(n.children[0], pc);
+    if (with_mat_) w_.line(fmt::format("{} = SEL({}, {}, {} < {});", m, m, k.mat, k.d, d));
+    w_.line(fmt::format("{} = fmin({}, {});", d, d, k.d));
+    w_.close("}");
+    return {d, m};
   }
 
   const ir::Graph& g_;

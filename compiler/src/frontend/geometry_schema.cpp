@@ -2,9 +2,14 @@
 
 #include <fmt/format.h>
 
+#include "fractal_schema.hpp"
+
 #include <cmath>
 #include <algorithm>
 #include <numbers>
+
+#include "catalogue_schema.hpp"
+#include "domain_schema.hpp"
 
 namespace sdfc::frontend {
 
@@ -13,13 +18,24 @@ using ir::NodeId;
 
 const std::vector<std::string_view>& geometry_kinds() {
   static const std::vector<std::string_view> k = {
-      "sphere", "box", "torus", "plane", "cylinder", "capsule", "mandelbulb", "union", "intersection",
+      "sphere", "box", "torus", "plane", "cylinder", "capsule", "union", "intersection",
       "difference", "smooth_union", "smooth_intersection", "smooth_difference"};
-  return k;
+  static const std::vector<std::string_view> all = [] {
+    std::vector<std::string_view> v = k;
+    for (auto f : fractal_kinds()) v.push_back(f);
+    v.insert(v.end(), catalogue_kinds().begin(), catalogue_kinds().end());
+    v.insert(v.end(), blend_kinds().begin(), blend_kinds().end());
+    return v;
+  }();
+  return all;
 }
 
 const std::vector<std::string_view>& geometry_modifiers() {
-  static const std::vector<std::string_view> k = {"translate", "rotate", "scale", "material"};
+  static const std::vector<std::string_view> k = [] {
+    std::vector<std::string_view> v = domain_modifiers();
+    v.insert(v.end(), {"scale", "rotate", "translate", "material"});
+    return v;
+  }();
   return k;
 }
 
@@ -94,13 +110,18 @@ NodeId GeometryLowering::lower_kind(const SourceValue& key, const SourceValue& b
   const std::string& k = key.scalar;
   const SourceLoc& at = key.loc;
   std::string what = k;
+  // Blends other than the polynomial smooth ones (domain_schema.cpp).
+  auto kids_of = [&](Kind kind, const SourceValue& list, std::vector<double> params) {
+    return lower_children(kind, key, list, std::move(params));
+  };
+  if (auto n = lower_blend(r_, key, body, kids_of)) return *n;
   // Combinators.
   if (k == "union" || k == "intersection" || k == "difference") {
     Kind kind = k == "union" ? Kind::Union : k == "intersection" ? Kind::Intersection : Kind::Difference;
     return lower_children(kind, key, body, {});
   }
   if (k == "smooth_union" || k == "smooth_intersection" || k == "smooth_difference") {
-    MapReader m(r_, body, what, {"radius", "children"});
+    MapReader m(r_, body, what, {"radius", "kind", "children"});
     if (!m.ok()) return ir::kNoNode;
     double radius = m.require("radius") ? m.number("radius", 0.1, Range::positive()) : 0.1;
     const SourceValue* kids = m.require("children");
@@ -145,13 +166,9 @@ NodeId GeometryLowering::lower_kind(const SourceValue& key, const SourceValue& b
     double radius = m.number("radius", 0.25, Range::positive());
     return b_.make(Kind::Capsule, {a[0], a[1], a[2], bb[0], bb[1], bb[2], radius}, {}, at);
   }
-  if (k == "mandelbulb") {
-    MapReader m(r_, body, what, {"power", "iterations", "bailout"});
-    double power = m.number("power", 8.0, Range::closed(1, 64));
-    int iterations = m.integer("iterations", 10, 1, 1000);
-    double bailout = m.number("bailout", 2.0, {0, 1e3, true});
-    return b_.make(Kind::Mandelbulb, {power, double(iterations), bailout}, {}, at);
-  }
+  for (auto f : fractal_kinds())
+    if (k == f) return lower_fractal(r_, b_, key, body);
+  if (auto n = lower_catalogue(r_, b_, key, body)) return *n;
   r_.sink().error(at, fmt::format("unknown node kind '{}'", k), did_you_mean(k, geometry_kinds()));
   return ir::kNoNode;
 }
@@ -180,8 +197,14 @@ NodeId GeometryLowering::lower_children(Kind kind, const SourceValue& key, const
 
 NodeId GeometryLowering::apply_modifiers(const SourceValue& node, NodeId n) {
   // Modifiers apply scale, then rotate, then translate, whatever their order
-  // in the file: p_world = T(R(S(p_local))).
-  if (const SourceValue* s = node.find("scale")) {
+  // in the file: p_world = T(R(S(p_local))). Domain operations come first,
+  // in the order of domain_modifiers().
+  n = apply_domain_modifiers(r_, b_, node, n);
+  if (const SourceValue* s = node.find("scale"); s && s->is_seq()) {
+    // Non-uniform: the distance is corrected by the smallest factor (a bound).
+    Vec3d f = r_.vec3(*s, "scale", {0, 1e4, true});
+    n = b_.make(Kind::ScaleXYZ, {f[0], f[1], f[2]}, {n}, s->loc);
+  } else if (s) {
     double f = r_.number(*s, "scale", {0, 1e4, true});
     n = b_.make(Kind::Scale, {f}, {n}, s->loc);
   }

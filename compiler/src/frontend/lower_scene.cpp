@@ -42,7 +42,7 @@ void read_camera(ValueReader& r, const SourceValue& v, ir::Camera& cam) {
 
 void read_render(ValueReader& r, const SourceValue& v, ir::MarchSettings& s) {
   MapReader m(r, v, "render", {"width", "height", "precision", "max_steps", "hit_epsilon", "max_distance",
-                               "step_factor", "gamma", "normals"});
+                               "step_factor", "gamma", "normals", "lipschitz_correction"});
   s.width = m.integer("width", s.width, 1, 16384);
   s.height = m.integer("height", s.height, 1, 16384);
   s.precision = m.word("precision", "float", {"float", "double"}) == "double" ? ir::Precision::Double : ir::Precision::Float;
@@ -50,6 +50,7 @@ void read_render(ValueReader& r, const SourceValue& v, ir::MarchSettings& s) {
   s.hit_epsilon = m.number("hit_epsilon", s.hit_epsilon, {0, 1000, true});
   s.max_distance = m.number("max_distance", s.max_distance, Range::positive());
   s.step_factor = m.number("step_factor", s.step_factor, {0, 2, true});
+  s.lipschitz_correction = m.word("lipschitz_correction", "true", {"true", "false"}) == "true";
   s.gamma = m.number("gamma", s.gamma, {0, 10, true});
   s.normals = m.word("normals", "tetrahedral", {"tetrahedral", "central"}) == "central" ? ir::NormalMethod::Central
                                                                                          : ir::NormalMethod::Tetrahedral;

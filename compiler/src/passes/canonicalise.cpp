@@ -1,7 +1,7 @@
 // canonicalise: one spelling for equivalent trees, so CSE and folding find
 // more. Nested unions (and intersections) are flattened into one n-ary node,
-// duplicate children dropped (min(a, a) = a), commutative children sorted by
-// a structural hash, and transforms pushed to the order
+// duplicate children of min/max dropped (min(a, a) = a), commutative children
+// sorted by a structural hash (smooth blends only when they have two), and transforms pushed to the order
 //   material( translate( rotate( scale( geometry ))))
 // using  R(T(t, x)) = T(Rt, R(x)),  S(T(t, x)) = T(st, S(x)),
 //        S(R(x)) = R(S(x))  (uniform scale commutes),  X(material(x)) = material(X(x)).
@@ -80,14 +80,19 @@ NodeId canon(ir::Builder& b, Kind k, std::vector<double> params, std::vector<Nod
     }
     kids = std::move(flat);
   }
-  if (ir::is_commutative(k)) {
+  // min and max are associative, commutative and idempotent, so their children
+  // can be sorted and deduplicated. A smooth blend is commutative for two
+  // children but neither associative (the fold order matters with three) nor
+  // idempotent (smin(a, a) < a), so it is sorted only when it has two.
+  bool plain = k == Kind::Union || k == Kind::Intersection;
+  if (ir::is_commutative(k) && (plain || kids.size() == 2)) {
     StructuralHash hash(g);
     std::vector<std::pair<uint64_t, NodeId>> keyed;
     for (NodeId c : kids) keyed.push_back({hash(c), c});
     std::stable_sort(keyed.begin(), keyed.end(), [](auto& a, auto& b) { return a.first < b.first; });
     kids.clear();
     for (auto& [h, c] : keyed)
-      if (std::find(kids.begin(), kids.end(), c) == kids.end()) kids.push_back(c);
+      if (!plain || std::find(kids.begin(), kids.end(), c) == kids.end()) kids.push_back(c);
   }
   return detail::fold_node(b, k, std::move(params), std::move(kids), loc);
 }

@@ -3,7 +3,10 @@
 // distance is positive); the emitter uses the root's for the ray interval.
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
+#include "catalogue_props.hpp"
+#include "domain_props.hpp"
 #include "sdfc/ir/fractal_math.hpp"
 #include "sdfc/passes/passes.hpp"
 
@@ -38,7 +41,16 @@ ir::Props infer(const ir::Graph& g, const ir::Node& n) {
   ir::Props p;
   p.known = true;
   const auto& q = n.params;
-  auto kid = [&](size_t i) -> const ir::Props& { return g.node(n.children[i]).props; };
+  // A child the emitter corrects reaches its parent as a bound with L = 1.
+  std::function<ir::Props(size_t)> kid = [&](size_t i) {
+    ir::Props c = g.node(n.children[i]).props;
+    if (c.corrected) c.lipschitz = 1, c.cls = DistanceClass::Bound;
+    c.corrected = false;
+    c.lipschitz_region = Box3::everything();
+    return c;
+  };
+  if (auto c = detail::catalogue_props(n)) return *c;
+  if (auto d = detail::domain_props(g, n, kid)) return *d;
   switch (n.kind) {
     case Kind::Sphere: p.bounds = Box3::cube(q[0]); p.cost = 6; break;
     case Kind::Box: p.bounds = box(-q[0], -q[1], -q[2], q[0], q[1], q[2]); p.cost = 16; break;
@@ -63,6 +75,48 @@ ir::Props infer(const ir::Graph& g, const ir::Node& n) {
       p.cls = DistanceClass::Estimate;
       p.cost = 10 + q[1] * 45;
       break;
+    // Fractals of issue 3: estimates (a bound in practice, not provably);
+    // bounds from fractal_math.hpp, cost per iteration from the loop body.
+    case Kind::Juliabulb:
+      p.bounds = Box3::cube(ir::julia_set_radius(q[0], std::sqrt(q[3] * q[3] + q[4] * q[4] + q[5] * q[5])));
+      p.cls = DistanceClass::Estimate;
+      p.cost = 10 + q[1] * 45;
+      break;
+    case Kind::Mandelbox: {
+      double smallest = std::fabs(q[0]) * std::min({q[9], q[10], q[11]});
+      double cn = std::sqrt(q[6] * q[6] + q[7] * q[7] + q[8] * q[8]);
+      p.bounds = Box3::cube(ir::mandelbox_half_extent(smallest, q[3], cn, q[5] != 0));
+      p.cls = DistanceClass::Estimate;
+      p.cost = 8 + q[4] * 25;
+      break;
+    }
+    case Kind::QuaternionJulia:
+      p.bounds = Box3::cube(ir::julia_set_radius(q[4], std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3])));
+      p.cls = DistanceClass::Estimate;
+      p.cost = 10 + q[5] * (q[4] == 3 ? 22 : 16);
+      break;
+    case Kind::Menger:
+    case Kind::Sierpinski:
+      p.bounds = Box3::cube(1.0);
+      p.cls = DistanceClass::Estimate;
+      p.cost = 20 + q[0] * (n.kind == Kind::Menger ? 20 : 16);
+      break;
+    case Kind::Kifs: {
+      // Every map of the IFS moves points beyond |offset| further out, so the
+      // attractor lies in the ball of radius |offset|; the estimator's cover
+      // by balls adds |offset| / scale^n.
+      double o = std::sqrt(q[2] * q[2] + q[3] * q[3] + q[4] * q[4]);
+      p.bounds = Box3::cube(o * (1 + std::pow(q[1], -q[5])) * 1.02 + 1e-3);
+      p.cls = DistanceClass::Estimate;
+      p.cost = 10 + q[5] * (q[0] == 2 ? 70 : 40);
+      break;
+    }
+    case Kind::Hybrid:
+      // Points beyond the bailout have escaped before the first step.
+      p.bounds = Box3::cube(q[1]);
+      p.cls = DistanceClass::Estimate;
+      p.cost = 10 + q[0] * 45;
+      break;
     case Kind::Translate: {
       p = kid(0);
       for (int i = 0; i < 3; ++i) p.bounds.lo[i] += q[i], p.bounds.hi[i] += q[i];
@@ -80,6 +134,7 @@ ir::Props infer(const ir::Graph& g, const ir::Node& n) {
       p.cost += 4;
       break;
     case Kind::Material: p = kid(0); p.cost += 1; break;
+    case Kind::Bounded: p = kid(0); p.cost += 16; break;  // the box test in front
     case Kind::Union:
     case Kind::Intersection:
     case Kind::Difference:
@@ -99,10 +154,21 @@ ir::Props infer(const ir::Graph& g, const ir::Node& n) {
         if (n.kind == Kind::Union || n.kind == Kind::SmoothUnion) p.bounds = p.bounds.united(c.bounds);
         if (n.kind == Kind::Intersection || n.kind == Kind::SmoothIntersection) p.bounds = p.bounds.intersected(c.bounds);
       }
-      // A smooth union adds at most radius/4 of material beyond its children.
-      if (n.kind == Kind::SmoothUnion && p.bounds.finite()) p.bounds = p.bounds.padded(q[0] * 0.25);
+      // Each fold of a smooth union subtracts at most radius/4, so n children
+      // reach at most (n - 1) * radius/4 beyond the union of their bounds.
+      if (n.kind == Kind::SmoothUnion && p.bounds.finite())
+        p.bounds = p.bounds.padded(double(n.children.size() - 1) * q[0] * 0.25);
       break;
     }
+    // The primitive catalogue: catalogue_props above.
+    case Kind::Cone: case Kind::CappedCone: case Kind::RoundCone: case Kind::Ellipsoid: case Kind::Octahedron:
+    case Kind::HexPrism: case Kind::TriPrism: case Kind::Link: case Kind::RoundedCylinder: case Kind::Pyramid:
+    case Kind::Triangle: case Kind::Quad: case Kind::BoxFrame: break;
+    // Domain operations and blends: domain_props above.
+    case Kind::Repeat: case Kind::Mirror: case Kind::PolarRepeat: case Kind::Symmetry: case Kind::Twist:
+    case Kind::Bend: case Kind::Elongate: case Kind::Round: case Kind::Onion: case Kind::Shell:
+    case Kind::Displace: case Kind::ScaleXYZ: case Kind::BlendUnion: case Kind::BlendIntersection:
+    case Kind::BlendDifference: break;
   }
   return p;
 }
@@ -111,7 +177,11 @@ ir::Props infer(const ir::Graph& g, const ir::Node& n) {
 
 ir::Module infer_properties(ir::Module m) {
   ir::Graph& g = *m.graph;
-  for (ir::NodeId id : g.postorder(m.root)) g.mutable_node(id).props = infer(g, g.node(id));
+  for (ir::NodeId id : g.postorder(m.root)) {
+    ir::Props p = infer(g, g.node(id));
+    p.corrected = m.plan.march.lipschitz_correction && p.lipschitz > 1 + 1e-9;
+    g.mutable_node(id).props = p;
+  }
   return m;
 }
 

@@ -1,6 +1,8 @@
 // The pass list, in order. Add a pass here and nowhere else.
 #include "sdfc/passes/passes.hpp"
 
+#include <chrono>
+
 namespace sdfc::passes {
 
 const std::vector<PassInfo>& pipeline() {
@@ -11,13 +13,17 @@ const std::vector<PassInfo>& pipeline() {
       {"cse", cse},
       {"eliminate_dead", eliminate_dead},
       {"infer_properties", infer_properties},
+      {"insert_bounding_volumes", insert_bounding_volumes},
   };
   return list;
 }
 
-ir::Module run_pipeline(ir::Module m, const PassObserver& after) {
+ir::Module run_pipeline(ir::Module m, const PassObserver& after, std::vector<PassTiming>* timings) {
   for (const auto& pass : pipeline()) {
+    auto t0 = std::chrono::steady_clock::now();
     m = pass.run(std::move(m));
+    if (timings)
+      timings->push_back({pass.name, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count()});
     if (after) after(pass.name, m);
   }
   return m;

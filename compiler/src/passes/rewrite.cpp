@@ -6,6 +6,7 @@ namespace sdfc::passes::detail {
 
 ir::Module rewrite(ir::Module m, const Rule& rule) {
   auto fresh = std::make_shared<ir::Graph>();
+  fresh->expressions = m.graph->expressions;
   ir::Builder b(*fresh);
   std::unordered_map<ir::NodeId, ir::NodeId> mapped;
   for (ir::NodeId id : m.graph->postorder(m.root)) {

@@ -6,6 +6,9 @@
 #include <cmath>
 #include <vector>
 
+#include "fractals.hpp"
+#include "catalogue.hpp"
+#include "domain.hpp"
 #include "sdfc/ir/fractal_math.hpp"
 
 namespace sdfc::reference {
@@ -47,11 +50,39 @@ double smax_poly(double a, double b, double k) {
   return std::max(a, b) + h * h * k / 4;
 }
 
+// Distance from p to the box (0 inside).
+double box_outside(const Vec3& p, const ir::Box3& b) {
+  double s = 0;
+  for (int i = 0; i < 3; ++i) {
+    double c = std::max({b.lo[i] - p[i], p[i] - b.hi[i], 0.0});
+    s += c * c;
+  }
+  return std::sqrt(s);
+}
+
+Sample evaluate_node(const ir::Graph& g, ir::NodeId id, const Vec3& p);
+
 }  // namespace
 
+// The node's distance with the correction the emitter applies where L > 1:
+// divided by L inside the region where L holds, outside it the distance to
+// the node's bounds.
 Sample evaluate(const ir::Graph& g, ir::NodeId id, const Vec3& p) {
+  Sample s = evaluate_node(g, id, p);
+  const ir::Props& pr = g.node(id).props;
+  if (!pr.corrected) return s;
+  if (pr.lipschitz_region.finite() && box_outside(p, pr.lipschitz_region) > 0)
+    return {box_outside(p, pr.bounds), s.material};
+  return {s.distance / pr.lipschitz, s.material};
+}
+
+namespace {
+
+Sample evaluate_node(const ir::Graph& g, ir::NodeId id, const Vec3& p) {
   const ir::Node& n = g.node(id);
   const auto& q = n.params;
+  if (auto d = detail::catalogue_distance(n, p)) return {*d, 0};
+  if (auto d = detail::domain_evaluate(g, n, p)) return *d;
   switch (n.kind) {
     case Kind::Sphere: return {len(p[0], p[1], p[2]) - q[0], 0};
     case Kind::Box: {
@@ -78,6 +109,13 @@ Sample evaluate(const ir::Graph& g, ir::NodeId id, const Vec3& p) {
       return {len(pa[0] - ba[0] * h, pa[1] - ba[1] * h, pa[2] - ba[2] * h) - q[6], 0};
     }
     case Kind::Mandelbulb: return {mandelbulb(p, q[0], int(q[1]), q[2]), 0};
+    case Kind::Juliabulb: return {fractals::juliabulb(p, q), 0};
+    case Kind::Mandelbox: return {fractals::mandelbox(p, q), 0};
+    case Kind::QuaternionJulia: return {fractals::quaternion_julia(p, q), 0};
+    case Kind::Menger: return {fractals::menger(p, q), 0};
+    case Kind::Sierpinski: return {fractals::sierpinski(p, q), 0};
+    case Kind::Kifs: return {fractals::kifs(p, q), 0};
+    case Kind::Hybrid: return {fractals::hybrid(p, q), 0};
     case Kind::Translate: return evaluate(g, n.children[0], {p[0] - q[0], p[1] - q[1], p[2] - q[2]});
     case Kind::Rotate: {
       // Stored local->world; apply the transpose to go world->local.
@@ -88,6 +126,16 @@ Sample evaluate(const ir::Graph& g, ir::NodeId id, const Vec3& p) {
     case Kind::Scale: {
       Sample s = evaluate(g, n.children[0], {p[0] / q[0], p[1] / q[0], p[2] / q[0]});
       return {s.distance * q[0], s.material};
+    }
+    case Kind::Bounded: {
+      // The box's exact distance is a lower bound of the child's; far enough
+      // out it stands in for the child, which is then not evaluated.
+      double c[3], h[3];
+      for (int i = 0; i < 3; ++i) c[i] = 0.5 * (q[i] + q[i + 3]), h[i] = 0.5 * (q[i + 3] - q[i]);
+      double dx = std::fabs(p[0] - c[0]) - h[0], dy = std::fabs(p[1] - c[1]) - h[1], dz = std::fabs(p[2] - c[2]) - h[2];
+      double box = len(std::max(dx, 0.0), std::max(dy, 0.0), std::max(dz, 0.0)) + std::min(std::max({dx, dy, dz}), 0.0);
+      if (box > q[6]) return {box, 0};
+      return evaluate(g, n.children[0], p);
     }
     case Kind::Material: {
       Sample s = evaluate(g, n.children[0], p);
@@ -122,8 +170,19 @@ Sample evaluate(const ir::Graph& g, ir::NodeId id, const Vec3& p) {
       }
       return acc;
     }
+    // The primitive catalogue: catalogue_distance above.
+    case Kind::Cone: case Kind::CappedCone: case Kind::RoundCone: case Kind::Ellipsoid: case Kind::Octahedron:
+    case Kind::HexPrism: case Kind::TriPrism: case Kind::Link: case Kind::RoundedCylinder: case Kind::Pyramid:
+    case Kind::Triangle: case Kind::Quad: case Kind::BoxFrame: break;
+    // Domain operations and blends: domain_evaluate above.
+    case Kind::Repeat: case Kind::Mirror: case Kind::PolarRepeat: case Kind::Symmetry: case Kind::Twist:
+    case Kind::Bend: case Kind::Elongate: case Kind::Round: case Kind::Onion: case Kind::Shell:
+    case Kind::Displace: case Kind::ScaleXYZ: case Kind::BlendUnion: case Kind::BlendIntersection:
+    case Kind::BlendDifference: break;
   }
   return {0, 0};
 }
+
+}  // namespace
 
 }  // namespace sdfc::reference

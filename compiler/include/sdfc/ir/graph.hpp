@@ -10,6 +10,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "sdfc/expr/expr.hpp"
 #include "sdfc/ir/node_kind.hpp"
 #include "sdfc/support/diagnostics.hpp"
 
@@ -44,6 +45,12 @@ struct Props {
   DistanceClass cls = DistanceClass::Exact;
   double lipschitz = 1.0;  // L of the distance function
   double cost = 0.0;       // rough flops per evaluation
+  // Where L > 1 and the scene asks for it, the emitter divides this node's
+  // distance by L, so its parent sees a bound with L = 1. L may only hold
+  // inside `lipschitz_region` (twist, bend, displace); outside it the
+  // emitter uses the distance to that box, a bound since the surface lies inside.
+  bool corrected = false;
+  Box3 lipschitz_region;
 };
 
 struct Node {
@@ -64,6 +71,8 @@ class Graph {
   std::vector<NodeId> postorder(NodeId root) const;
   // How many parents reference each node among those reachable from root.
   std::vector<int> use_counts(NodeId root) const;
+  // Expressions that nodes refer to by index (displace); passes carry them over.
+  std::vector<expr::ExprPtr> expressions;
 
  private:
   std::vector<Node> nodes_;

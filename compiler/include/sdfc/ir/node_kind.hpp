@@ -24,6 +24,8 @@ struct KindInfo {
 
 const KindInfo& info(Kind k);
 const std::vector<KindInfo>& all_kinds();
-bool is_commutative(Kind k);  // union, intersection, smooth union/intersection
+// Order of the children does not matter: union, intersection, and smooth
+// union/intersection of two children (smooth blends are not associative).
+bool is_commutative(Kind k);
 
 }  // namespace sdfc::ir

@@ -31,6 +31,7 @@ struct MarchSettings {
   double hit_epsilon = 0.5;  // in pixels: hit when d < hit_epsilon * t * pixel_angle
   double max_distance = 50;
   double step_factor = 1.0;
+  bool lipschitz_correction = true;  // divide subtrees with L > 1 by L (issue 9)
   double gamma = 2.2;
   NormalMethod normals = NormalMethod::Tetrahedral;
 };

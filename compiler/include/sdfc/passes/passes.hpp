@@ -15,6 +15,7 @@ ir::Module fold_constants(ir::Module m);      // merge/remove transforms, collap
 ir::Module canonicalise(ir::Module m);        // flatten nested unions, sort commutative children, transforms outward
 ir::Module cse(ir::Module m);                 // rebuild through the hash-consing builder, drop unreachable nodes
 ir::Module infer_properties(ir::Module m);    // bounds, distance class, Lipschitz constant, cost
+ir::Module insert_bounding_volumes(ir::Module m);  // box tests in front of expensive subtrees
 ir::Module eliminate_dead(ir::Module m);      // unused materials, dark lights
 
 struct PassInfo {
@@ -23,8 +24,13 @@ struct PassInfo {
 };
 const std::vector<PassInfo>& pipeline();
 
-// Runs the pipeline; after each pass calls `after(name, module)` if given.
+// Runs the pipeline; after each pass calls `after(name, module)` if given
+// and, if `timings` is given, appends (pass name, milliseconds).
 using PassObserver = std::function<void(std::string_view, const ir::Module&)>;
-ir::Module run_pipeline(ir::Module m, const PassObserver& after = {});
+struct PassTiming {
+  std::string_view pass;
+  double ms;
+};
+ir::Module run_pipeline(ir::Module m, const PassObserver& after = {}, std::vector<PassTiming>* timings = nullptr);
 
 }  // namespace sdfc::passes

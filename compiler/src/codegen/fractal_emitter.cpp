@@ -1,0 +1,123 @@
+#include "fractal_emitter.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "sdfc/ir/fractal_math.hpp"
+
+namespace sdfc::codegen::detail {
+
+namespace {
+
+using ir::Kind;
+
+// A power the trig-free path can take: a whole number from 2 up.
+bool integer_power(double power) { return power >= 2 && power == std::floor(power); }
+
+std::string hybrid(const ir::Node& n, const std::string& p, const Literals& lit, CodeWriter& w,
+                   std::set<std::string>& used) {
+  const auto& q = n.params;
+  int iterations = int(q[0]), steps = int(q[2]);
+  std::string d = fmt::format("hyb{}", w.fresh());
+  int period = 0;
+  bool any_bulb = false;
+  for (int s = 0; s < steps; ++s) {
+    period += int(q[3 + s * ir::kHybridStepParams + 1]);
+    any_bulb = any_bulb || q[3 + s * ir::kHybridStepParams] == double(ir::HybridStep::Mandelbulb);
+  }
+  w.line(fmt::format("real {};  // hybrid orbit: {} iterations, the step pattern repeats every {}", d, iterations, period));
+  w.open("{");
+  w.line(fmt::format("vec3 z = {};", p));
+  w.line("real dr = 1.0f;");
+  w.line("real r = v3_length(z);");
+  w.line(fmt::format("mask alive = r < {};", lit.real(q[1])));
+  w.open(fmt::format("for (int i = 0; i < {} && M_ANY(alive); ++i) {{", iterations));
+  w.line(fmt::format("const int k = i % {};  // the same step for every lane", period));
+  w.line("real dr_next = dr;");
+  w.line("vec3 z_next;");
+  int upto = 0;
+  for (int s = 0; s < steps; ++s) {
+    const double* st = &q[3 + s * ir::kHybridStepParams];
+    upto += int(st[1]);
+    std::string cond = s + 1 == steps ? "else" : fmt::format("{}if (k < {})", s ? "else " : "", upto);
+    if (st[0] == double(ir::HybridStep::Mandelbulb)) {
+      used.insert("hybrid_bulb_step");
+      w.line(fmt::format("{} z_next = hybrid_bulb_step(z, {}, {}, &dr_next);  // mandelbulb power {}", cond,
+                         lit.real(st[2]), p, st[2]));
+    } else {
+      used.insert("hybrid_box_step");
+      w.line(fmt::format("{} z_next = hybrid_box_step(z, {}, {}, {}, {}, {}, &dr_next);  // mandelbox scale {}", cond,
+                         lit.real(st[2]), lit.real(st[3] * st[3]), lit.real(st[4] * st[4]), lit.real(st[5]), p, st[2]));
+    }
+  }
+  w.line("z = v3_select(z, z_next, alive);");
+  w.line("dr = SEL(dr, dr_next, alive);");
+  w.line("r = v3_length(z);");
+  w.line(fmt::format("alive = alive & (r < {});", lit.real(q[1])));
+  w.close("}");
+  if (any_bulb)
+    w.line(fmt::format("{} = 0.5f * log(fmax(r, K(1e-20f))) * r / dr;  // with a Mandelbulb step: the log estimator", d));
+  else
+    w.line(fmt::format("{} = r / fabs(dr);  // folds only: the linear estimator", d));
+  w.line("// far field: the set lies inside the bailout ball, so beyond twice its radius the distance to");
+  w.line("// the ball is a true bound (the log estimator overshoots there) and still far from zero");
+  w.line(fmt::format("real r0 = v3_length({});", p));
+  w.line(fmt::format("{0} = SEL({0}, r0 - {1}, r0 > {2});", d, lit.real(q[1]), lit.real(2 * q[1])));
+  w.close("}");
+  return d;
+}
+
+}  // namespace
+
+bool is_fractal(const ir::Node& n) { return ir::info(n.kind).category == ir::Category::Fractal; }
+
+std::string emit_fractal(const ir::Node& n, const std::string& p, const Literals& lit, CodeWriter& w,
+                         std::set<std::string>& used) {
+  const auto& q = n.params;
+  auto r = [&](size_t i) { return lit.real(q[i]); };
+  auto call = [&](const char* fn) {
+    used.insert(fn);
+    return std::string(fn);
+  };
+  switch (n.kind) {
+    case Kind::Mandelbulb: {
+      std::string radius = lit.real(ir::mandelbulb_set_radius(q[0]));
+      if (integer_power(q[0]))  // trig-free: the angles' multiples come from complex powers
+        return fmt::format("{}({}, {}, {}, {}, {}, 0, v3_splat(0.0f))", call("de_mandelbulb_int"), p, int(q[0]),
+                           int(q[1]), r(2), radius);
+      return fmt::format("{}({}, {}, {}, {}, {})", call("de_mandelbulb"), p, r(0), int(q[1]), r(2), radius);
+    }
+    case Kind::Juliabulb: {
+      double cn = std::sqrt(q[3] * q[3] + q[4] * q[4] + q[5] * q[5]);
+      std::string radius = lit.real(ir::julia_set_radius(q[0], cn));
+      std::string c = lit.vec3({q[3], q[4], q[5]});
+      if (integer_power(q[0]))
+        return fmt::format("{}({}, {}, {}, {}, {}, 1, {})", call("de_mandelbulb_int"), p, int(q[0]), int(q[1]), r(2),
+                           radius, c);
+      return fmt::format("{}({}, {}, {}, {}, {}, {})", call("de_juliabulb"), p, r(0), int(q[1]), r(2), radius, c);
+    }
+    case Kind::Mandelbox:
+      return fmt::format("{}({}, {}, {}, {}, {}, {}, {}, {}, {})", call("de_mandelbox"), p, r(0),
+                         lit.real(q[1] * q[1]), lit.real(q[2] * q[2]), r(3), int(q[4]), int(q[5]),
+                         lit.vec3({q[6], q[7], q[8]}), lit.vec3({q[9], q[10], q[11]}));
+    case Kind::QuaternionJulia: {
+      double cn = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+      return fmt::format("{}({}, {}, {}, {}, {}, {}, {}, {})", call("de_quaternion_julia"), p, r(6), r(0),
+                         lit.vec3({q[1], q[2], q[3]}), int(q[4]), int(q[5]), r(7),
+                         lit.real(ir::julia_set_radius(q[4], cn)));
+    }
+    case Kind::Menger: return fmt::format("{}({}, {}, {})", call("de_menger"), p, int(q[0]), r(1));
+    case Kind::Sierpinski: return fmt::format("{}({}, {}, {})", call("de_sierpinski"), p, int(q[0]), r(1));
+    case Kind::Kifs: {
+      auto row = [&](size_t i) { return lit.vec3({q[i], q[i + 1], q[i + 2]}); };
+      return fmt::format("{}({}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {})", call("de_kifs"), p,
+                         int(q[0]), r(1), lit.vec3({q[2], q[3], q[4]}), int(q[5]), row(6), row(9), row(12), row(15),
+                         row(18), row(21));
+    }
+    case Kind::Hybrid: return hybrid(n, p, lit, w, used);
+    default: return "";
+  }
+}
+
+}  // namespace sdfc::codegen::detail

@@ -1,0 +1,20 @@
+#pragma once
+// Fractal nodes to OpenCL C: the call into the stdlib estimator with the
+// node's parameters as literals, or (hybrid) an orbit loop written inline.
+#include <set>
+#include <string>
+
+#include "code_writer.hpp"
+#include "sdfc/ir/graph.hpp"
+
+namespace sdfc::codegen::detail {
+
+// True for the kinds emit_fractal handles.
+bool is_fractal(const ir::Node& n);
+
+// Writes any statements the node needs to `w` and returns the expression for
+// its distance at point `p`; adds the stdlib functions it calls to `used`.
+std::string emit_fractal(const ir::Node& n, const std::string& p, const Literals& lit, CodeWriter& w,
+                         std::set<std::string>& used);
+
+}  // namespace sdfc::codegen::detail

@@ -1,0 +1,37 @@
+#pragma once
+// Error metrics of a render against a reference render of the same view:
+// hit-mask disagreement, depth and normal errors (from the AOVs) and image
+// error (PSNR, SSIM). Used by `sdfc compare` and the accuracy benchmark.
+#include <sdfrt/float_image.hpp>
+
+#include <optional>
+#include <string>
+
+namespace sdfrt {
+
+// A render as written by `sdfc render --aov depth,normal`: the beauty image
+// and, when present beside it, <stem>.depth.pfm and <stem>.normal.pfm.
+struct RenderOutputs {
+  std::string path;
+  FloatImage beauty;                 // planes r, g, b in [0, 1]
+  std::optional<FloatImage> depth;   // plane "depth": ray distance, -1 on a miss
+  std::optional<FloatImage> normal;  // planes normal.x/y/z, 0 on a miss
+};
+RenderOutputs load_render_outputs(const std::string& png_path);
+
+struct ComparisonMetrics {
+  int width = 0, height = 0;
+  bool has_depth = false, has_normal = false;
+  double hit_mask_disagreement_pct = 0;  // pixels where one hits and the other misses
+  double depth_rel_error_median = 0, depth_rel_error_p99 = 0;  // |d - d_ref| / d_ref, both hit
+  double normal_error_deg_median = 0, normal_error_deg_p99 = 0;  // angle, both hit
+  double psnr_db = 0;  // of the display-encoded RGB; +inf for identical images
+  double ssim = 0;     // mean SSIM of the luma, 7x7 windows
+};
+
+// Throws std::invalid_argument when the sizes differ.
+ComparisonMetrics compare_renders(const RenderOutputs& reference, const RenderOutputs& test);
+std::string format_table(const ComparisonMetrics& m);
+std::string format_json(const ComparisonMetrics& m);
+
+}  // namespace sdfrt

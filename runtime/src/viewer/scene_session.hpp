@@ -1,0 +1,90 @@
+#pragma once
+// The scene the viewer shows: compiled module + built Renderer, and the file
+// it came from. poll() notices saves and swaps in a new kernel; a save that
+// does not compile (scene or build error) keeps the last good kernel.
+#include <sdfrt/device.hpp>
+#include <sdfrt/float_image.hpp>
+#include <sdfrt/renderer.hpp>
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sdfc/ir/module.hpp"
+
+namespace sdfc::viewer {
+
+struct SceneOptions {
+  std::string path;
+  std::vector<std::string> sets;  // --set overrides, reapplied on every reload
+  int simd_width = 16;
+};
+
+enum class ReloadResult { Unchanged, Reloaded, Failed };
+
+class SceneSession {
+ public:
+  // Compiles and builds the scene once; a SceneError or BuildError here
+  // propagates (there is no previous kernel to fall back on).
+  SceneSession(sdfrt::Device& device, SceneOptions options);
+
+  // Checks the file's stamp (mtime, size, inode). A change is acted on once
+  // the stamp has been seen unchanged on one more poll, so an editor's
+  // truncate-then-write is not compiled half-written.
+  ReloadResult poll();
+  // True when the next poll() will recompile if the file stays as it is.
+  bool change_pending() const noexcept { return has_pending_; }
+  // Recompiles now, whatever the stamp says.
+  ReloadResult reload();
+
+  const ir::Module& module() const noexcept { return *module_; }
+  sdfrt::Renderer& renderer() noexcept { return *renderer_; }
+  // Successful compiles so far (1 after construction).
+  int generation() const noexcept { return generation_; }
+  // The message of the last failed reload; empty after a success.
+  const std::string& error() const noexcept { return error_; }
+  const SceneOptions& options() const noexcept { return options_; }
+
+  // The scene distance at p, from the CPU reference evaluator (speed scaling).
+  double distance_at(const ir::Vec3d& p) const;
+
+  // Renders the scene from `camera` at width x height. The optional offset
+  // (in pixels, within +-0.5) shifts every ray for progressive
+  // anti-aliasing; {0, 0} is exactly what `sdfc render` computes.
+  sdfrt::FloatImage render(const ir::Camera& camera, int width, int height, double time,
+                           double offset_x = 0, double offset_y = 0, sdfrt::RenderStats* stats = nullptr);
+  // The same, but `interrupt` is asked between tiles; when it returns true
+  // the frame is abandoned and nullopt returned.
+  std::optional<sdfrt::FloatImage> render_interruptible(const ir::Camera& camera, int width, int height,
+                                                        double time, double offset_x, double offset_y,
+                                                        const std::function<bool()>& interrupt,
+                                                        sdfrt::RenderStats* stats = nullptr);
+
+ private:
+  struct Stamp {
+    long long mtime_ns = -1, size = -1, inode = -1;
+    bool operator==(const Stamp&) const = default;
+  };
+  Stamp read_stamp() const;
+  void compile();  // throws; replaces module_/renderer_ only on success
+  std::vector<float> frame_for(const ir::Camera& camera, int width, int height, double time, double offset_x,
+                               double offset_y) const;
+
+  sdfrt::Device* device_;
+  SceneOptions options_;
+  std::unique_ptr<ir::Module> module_;
+  std::unique_ptr<sdfrt::Renderer> renderer_;
+  Stamp loaded_, pending_;
+  bool has_pending_ = false;
+  int generation_ = 0;
+  std::string error_;
+};
+
+// Shifts the rays of a frame block (codegen::frame_params layout) by
+// (dx, dy) pixels of a width x height image: the image plane moves, the
+// camera position does not.
+void offset_frame_rays(std::vector<float>& frame, int width, int height, double dx, double dy);
+
+}  // namespace sdfc::viewer

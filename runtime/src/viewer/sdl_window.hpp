@@ -1,0 +1,43 @@
+#pragma once
+// The SDL2 window: shows an 8-bit RGB image of any size stretched to the
+// window, and owns SDL's video subsystem for its lifetime.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+struct SDL_Window;
+struct SDL_Renderer;
+struct SDL_Texture;
+
+namespace sdfc::viewer {
+
+class SdlWindow {
+ public:
+  // Throws std::runtime_error with SDL's message (no display, no driver).
+  SdlWindow(const std::string& title, int width, int height);
+  ~SdlWindow();
+  SdlWindow(const SdlWindow&) = delete;
+  SdlWindow& operator=(const SdlWindow&) = delete;
+
+  // Uploads `rgb` (w*h*3 bytes, rows top to bottom) and presents it scaled
+  // to the whole window, with `overlay` lines of text on top.
+  void show(const std::uint8_t* rgb, int w, int h, const std::vector<std::string>& overlay = {});
+  void set_title(const std::string& title);
+  const std::string& title() const noexcept { return title_; }
+  // SDL's video driver ("x11", "wayland", "offscreen", ...).
+  std::string driver() const;
+  // True for drivers that show nothing on a screen (offscreen, dummy).
+  bool invisible() const;
+  int width() const noexcept { return width_; }
+  int height() const noexcept { return height_; }
+
+ private:
+  SDL_Window* window_ = nullptr;
+  SDL_Renderer* renderer_ = nullptr;
+  SDL_Texture* texture_ = nullptr;
+  int width_, height_;
+  int tex_w_ = 0, tex_h_ = 0;
+  std::string title_;
+};
+
+}  // namespace sdfc::viewer

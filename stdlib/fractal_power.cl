@@ -1,0 +1,162 @@
+//! fn ipow_real
+//! class: helper
+// x^n for a non-negative integer n known when the kernel is built, by
+// square-and-multiply: no pow(), no log/exp.
+inline real ipow_real(real x, int n)
+{
+    real acc = 1.0f;
+    real base = x;
+    for (int k = n; k > 0; k >>= 1) {
+        if (k & 1) acc = acc * base;
+        base = base * base;
+    }
+    return acc;
+}
+
+//! fn cpow_int
+//! class: helper
+// (re + i im)^n by square-and-multiply. For a unit complex number
+// cos t + i sin t this gives cos nt and sin nt without trig (de Moivre):
+// the Chebyshev recurrences evaluated by repeated squaring.
+inline void cpow_int(real re, real im, int n, real* out_re, real* out_im)
+{
+    real ar = 1.0f, ai = 0.0f;
+    real br = re, bi = im;
+    for (int k = n; k > 0; k >>= 1) {
+        if (k & 1) {
+            real t = ar * br - ai * bi;
+            ai = ar * bi + ai * br;
+            ar = t;
+        }
+        real s = br * br - bi * bi;
+        bi = 2.0f * br * bi;
+        br = s;
+    }
+    *out_re = ar;
+    *out_im = ai;
+}
+
+//! fn bulb_power_int
+//! deps: vec3_ops, cpow_int, ipow_real
+//! class: helper
+// White-Nylander z^n for an integer n with no trig: with cos t = z/r,
+// sin t = rho/r (rho = |(x, y)|) and cos f = x/rho, sin f = y/rho, the
+// power-n angles come from ((z + i rho)/r)^n and ((x + i y)/rho)^n.
+// Returns z^n and sets *r_pow_n_minus_1 = r^(n-1) for the derivative.
+inline vec3 bulb_power_int(vec3 z, int n, real* r_pow_n_minus_1)
+{
+    real r = v3_length(z);
+    real rho = sqrt(z.x * z.x + z.y * z.y);
+    real inv_r = 1.0f / fmax(r, K(1e-20f));
+    mask on_axis = rho < 1e-20f;  // atan2(0, 0) = 0: the azimuth is 0 there
+    real inv_rho = 1.0f / fmax(rho, K(1e-20f));
+    real cos_nt, sin_nt, cos_nf, sin_nf;
+    cpow_int(z.z * inv_r, rho * inv_r, n, &cos_nt, &sin_nt);
+    cpow_int(SEL(z.x * inv_rho, (real)(1.0f), on_axis), SEL(z.y * inv_rho, (real)(0.0f), on_axis), n, &cos_nf, &sin_nf);
+    real rn1 = ipow_real(r, n - 1);
+    *r_pow_n_minus_1 = rn1;
+    real rn = rn1 * r;
+    return v3(rn * sin_nt * cos_nf, rn * sin_nt * sin_nf, rn * cos_nt);
+}
+
+//! fn de_mandelbulb_int
+//! deps: vec3_ops, bulb_power_int
+//! class: estimate
+// The Mandelbulb (julia = 0: z <- z^n + p) or Juliabulb (julia = 1:
+// z <- z^n + c) for an integer power known at build time: the analytic
+// running-derivative estimator d = 0.5 log(r) r / dr with the trig-free
+// power. dr <- n r^(n-1) dr (+ 1 for the Mandelbulb, whose c depends on p).
+// Outside 1.5x the set radius it returns the distance to that ball.
+inline real de_mandelbulb_int(vec3 p, int power, int iterations, real bailout, real set_radius, int julia, vec3 c)
+{
+    vec3 add = julia ? c : p;
+    real dr_add = julia ? 0.0f : 1.0f;
+    vec3 z = p;
+    real dr = 1.0f;
+    real r = v3_length(z);
+    mask alive = r < bailout;
+    for (int i = 0; i < iterations && M_ANY(alive); ++i) {
+        real rn1;
+        vec3 z_next = v3_add(bulb_power_int(z, power, &rn1), add);
+        real dr_next = rn1 * (real)((scalar)power) * dr + dr_add;
+        z = v3_select(z, z_next, alive);
+        dr = SEL(dr, dr_next, alive);
+        r = v3_length(z);
+        alive = alive & (r < bailout);
+    }
+    real de = 0.5f * log(fmax(r, K(1e-20f))) * r / dr;
+    real r0 = v3_length(p);
+    return SEL(de, r0 - set_radius, r0 > 1.5f * set_radius);
+}
+
+//! fn de_juliabulb
+//! deps: vec3_ops
+//! class: estimate
+// The Juliabulb for any real power: z <- z^n + c with the White-Nylander
+// trig formula, dr <- n r^(n-1) dr (c is constant, so no + 1).
+inline real de_juliabulb(vec3 p, real power, int iterations, real bailout, real set_radius, vec3 c)
+{
+    vec3 z = p;
+    real dr = 1.0f;
+    real r = v3_length(z);
+    mask alive = r < bailout;
+    for (int i = 0; i < iterations && M_ANY(alive); ++i) {
+        real rs = fmax(r, K(1e-20f));
+        real theta = acos(clamp(z.z / rs, K(-1.0f), K(1.0f))) * power;
+        real phi = atan2(z.y, z.x) * power;
+        real rp = pow(rs, power - 1.0f);
+        real dr_next = rp * power * dr;
+        real zr = rp * rs;
+        real st = sin(theta);
+        vec3 z_next = v3(zr * st * cos(phi) + c.x, zr * st * sin(phi) + c.y, zr * cos(theta) + c.z);
+        z = v3_select(z, z_next, alive);
+        dr = SEL(dr, dr_next, alive);
+        r = v3_length(z);
+        alive = alive & (r < bailout);
+    }
+    real de = 0.5f * log(fmax(r, K(1e-20f))) * r / dr;
+    real r0 = v3_length(p);
+    return SEL(de, r0 - set_radius, r0 > 1.5f * set_radius);
+}
+
+//! fn de_quaternion_julia
+//! deps: vec3_ops
+//! class: estimate
+// Quaternion Julia set q <- q^degree + c (degree 2, or the cubic of seed
+// 000 Listing 4) sliced at w = slice: the point (x, y, z) is the
+// quaternion x + y i + z j + slice k. For q = (a, v), q^2 = (a^2 - v.v, 2a v)
+// and q^3 = (a (a^2 - 3 v.v), (3a^2 - v.v) v). The scalar running
+// derivative |q'| <- degree |q|^(degree-1) |q'| gives d = 0.5 log(r) r / |q'|.
+inline real de_quaternion_julia(vec3 p, real slice, real ca, vec3 cv, int degree, int iterations,
+                                real bailout, real set_radius)
+{
+    real a = p.x;
+    vec3 v = v3(p.y, p.z, slice);
+    real md = 1.0f;
+    real r2 = a * a + v3_dot(v, v);
+    real b2 = bailout * bailout;
+    mask alive = r2 < b2;
+    for (int i = 0; i < iterations && M_ANY(alive); ++i) {
+        real vv = v3_dot(v, v);
+        real a_next, vscale, md_next;
+        if (degree == 3) {
+            a_next = a * (a * a - 3.0f * vv);
+            vscale = 3.0f * a * a - vv;
+            md_next = 3.0f * r2 * md;
+        } else {
+            a_next = a * a - vv;
+            vscale = 2.0f * a;
+            md_next = 2.0f * sqrt(r2) * md;
+        }
+        vec3 v_next = v3_add(v3_scale(v, vscale), cv);
+        a = SEL(a, a_next + ca, alive);
+        v = v3_select(v, v_next, alive);
+        md = SEL(md, md_next, alive);
+        r2 = a * a + v3_dot(v, v);
+        alive = alive & (r2 < b2);
+    }
+    real r = sqrt(r2);
+    real de = 0.5f * log(fmax(r, K(1e-20f))) * r / md;
+    real r0 = sqrt(v3_dot(p, p) + slice * slice);
+    return SEL(de, r0 - set_radius, r0 > 1.5f * set_radius);
+}

@@ -1,0 +1,159 @@
+// The fractal estimators of issue 3 on every OpenCL evaluator against the
+// CPU reference. To keep kernel builds few, each group scene places several
+// fractals side by side in one union; the points are sampled around each
+// member (uniform in its box, dense along rays through its surface, and far
+// away), at least 1000 per fractal.
+#include <gtest/gtest.h>
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <random>
+
+#include "conformance.hpp"
+
+namespace sdfc::conformance {
+namespace {
+
+using test::add;
+using test::mul;
+
+struct Member {
+  std::string name;
+  std::string node;  // the YAML geometry node, without translate
+  double radius;     // half the side of a box around it
+};
+
+struct Group {
+  std::string name;
+  std::vector<Member> members;
+  double spacing;
+};
+
+void PrintTo(const Group& g, std::ostream* os) { *os << g.name; }
+
+std::vector<Group> groups() {
+  return {
+      {"folds",
+       {{"mandelbox", "mandelbox: {scale: -1.5, iterations: 12}", 2.2},
+        {"mandelbox_julia", "mandelbox: {scale: 2, julia: [0.8, -0.4, 0.3], iterations: 10}, scale: 0.25", 2.2},
+        {"mandelbox_nonconformal", "mandelbox: {scale: -1.5, scale_xyz: [1.2, 1.0, 0.8], iterations: 12}", 2.2},
+        {"menger", "menger: {iterations: 4}", 1.2},
+        {"sierpinski", "sierpinski: {iterations: 8}", 1.2}},
+       6.0},
+      {"julias",
+       {{"julia2", "julia: {c: [-0.2, 0.6, 0.2, 0.2], degree: 2, iterations: 12}", 1.6},
+        {"julia3_slice", "julia: {c: [-0.6, 0.3, 0.2, 0.1], degree: 3, iterations: 10, slice: 0.15}", 1.6},
+        {"juliabulb8", "mandelbulb: {power: 8, julia: [0.35, -0.3, 0.2], iterations: 8}", 1.4},
+        {"juliabulb_real_power", "mandelbulb: {power: 6.5, julia: [0.3, 0.2, -0.4], iterations: 8}", 1.4},
+        {"mandelbulb_trig_power", "mandelbulb: {power: 7.5, iterations: 8}", 1.3},
+        {"hybrid", "hybrid: {steps: [{mandelbulb: {power: 8}}, {mandelbox: {scale: 2}}], repeat: [1, 2], iterations: 9, bailout: 3}", 1.8}},
+       5.0},
+      {"kifs",
+       {{"kifs_tetra", "kifs: {symmetry: tetrahedral, scale: 2, iterations: 10, rotate_before: {axis: [1, 0, 0], degrees: 12}}", 1.9},
+        {"kifs_octa", "kifs: {symmetry: octahedral, scale: 2, offset: [1, 0.6, 0.3], iterations: 10}", 1.3},
+        {"kifs_icosa", "kifs: {symmetry: icosahedral, scale: 2.3, offset: [0.85, 0.53, 0], iterations: 9, rotate_after: {axis: [0, 0, 1], degrees: 15}}", 1.1},
+        {"kifs_menger", "kifs: {symmetry: menger, scale: 3, iterations: 4}", 1.8}},
+       5.0},
+  };
+}
+
+std::string group_yaml(const Group& g) {
+  std::string y = "scene:\n  union:\n";
+  for (size_t i = 0; i < g.members.size(); ++i)
+    y += fmt::format("    - {{{}, translate: [{}, 0, 0]}}\n", g.members[i].node, i * g.spacing);
+  return y;
+}
+
+// Float orbits of up to 12 folding/power iterations amplify float rounding
+// by the per-step expansion (|scale| or the power) each iteration, so float
+// and double orbits drift apart by ~1e-4 relative before the estimate is
+// formed; the estimates are continuous in the orbit (folds are continuous
+// maps), so the error stays proportional to |d|. Inside (d < 0, the fold
+// fractals and the log estimators) only the rough size is reproducible.
+// double: one float ulp of the stored result, as for the primitives.
+Tolerance fractal_tolerance(bool dbl) { return dbl ? Tolerance{1e-9, 0x1p-23} : Tolerance{2e-4, 2e-3, 5e-3, 0.5}; }
+
+std::vector<V3> member_points(const ir::Module& m, const V3& centre, double radius, std::mt19937_64& rng) {
+  std::vector<V3> pts;
+  V3 lo = add(centre, {-radius, -radius, -radius}), hi = add(centre, {radius, radius, radius});
+  for (int i = 0; i < 800; ++i) pts.push_back(test::uniform_in(rng, lo, hi));
+  int rays = 0;
+  for (int attempt = 0; attempt < 60 && rays < 8; ++attempt) {
+    V3 o = add(centre, mul(test::random_unit(rng), 1.8 * radius));
+    V3 aim = add(centre, mul(test::random_unit(rng), 0.2 * radius));
+    V3 rd = test::normalize(test::sub(aim, o));
+    double t = 0;
+    bool hit = false;
+    for (int i = 0; i < 3000 && t < 4 * radius; ++i) {
+      double d = reference::distance(m, add(o, mul(rd, t)));
+      if (d < 1e-6) {
+        hit = true;
+        break;
+      }
+      t += d;
+    }
+    if (!hit) continue;
+    ++rays;
+    for (int k = -60; k <= 60; ++k) pts.push_back(add(o, mul(rd, t + k * 2e-4 * radius)));
+  }
+  for (int i = 0; i < 60; ++i) pts.push_back(add(centre, mul(test::random_unit(rng), radius * (1.0 + i * 0.02))));
+  return pts;
+}
+
+class FractalConformance : public ::testing::TestWithParam<std::tuple<Group, EvalConfig>> {};
+
+TEST_P(FractalConformance, MatchesReference) {
+  const auto& [g, cfg] = GetParam();
+  ir::Module m = test::compile_text(group_yaml(g), g.name + ".yaml", cfg.overrides());
+  std::mt19937_64 rng(std::hash<std::string>{}(g.name) ^ 0xf7ac);
+  std::vector<V3> pts;
+  std::vector<size_t> first;  // where each member's points start
+  for (size_t i = 0; i < g.members.size(); ++i) {
+    first.push_back(pts.size());
+    auto mp = member_points(m, {double(i) * g.spacing, 0, 0}, g.members[i].radius, rng);
+    ASSERT_GE(mp.size(), 1000u) << g.members[i].name << ": too few rays found the surface";
+    pts.insert(pts.end(), mp.begin(), mp.end());
+  }
+  first.push_back(pts.size());
+  ProbeCheck pc = probe_and_compare(m, cfg, pts, fractal_tolerance(cfg.dbl));
+  // Every member's sample must straddle its surface, or it says little.
+  for (size_t i = 0; i < g.members.size(); ++i) {
+    int near = 0;
+    for (size_t k = first[i]; k < first[i + 1]; ++k) near += std::fabs(pc.ref_d[k]) < 1e-2 * g.members[i].radius;
+    EXPECT_GT(near, 300) << g.members[i].name;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Fractals, FractalConformance,
+                         ::testing::Combine(::testing::ValuesIn(groups()), ::testing::ValuesIn(eval_configs())),
+                         [](const auto& info) { return std::get<0>(info.param).name + "_" + std::get<1>(info.param).name(); });
+
+// The inferred bounds must hold every point the estimator puts on or inside
+// the surface (the render kernel clips rays to them). CPU only.
+TEST(FractalBounds, SurfaceLiesInsideTheInferredBounds) {
+  std::mt19937_64 rng(7);
+  for (const auto& g : groups())
+    for (const auto& mem : g.members) {
+      ir::Module m = test::compile_text("scene: {" + mem.node + "}\n");
+      const ir::Box3& b = m.graph->node(m.root).props.bounds;
+      ASSERT_TRUE(b.finite()) << mem.name;
+      double ext = 0;
+      for (int i = 0; i < 3; ++i) ext = std::max(ext, b.hi[i] - b.lo[i]);
+      ir::Box3 padded = b.padded(0.01 * ext);  // as the render kernel pads it
+      std::vector<V3> pts;
+      for (int i = 0; i < 20000; ++i)
+        pts.push_back(test::uniform_in(rng, mul(V3{b.lo[0], b.lo[1], b.lo[2]}, 1.6), mul(V3{b.hi[0], b.hi[1], b.hi[2]}, 1.6)));
+      int outside_hits = 0;
+      for (const V3& p : pts) {
+        if (reference::distance(m, p) > 1e-4 * ext) continue;
+        bool in = true;
+        for (int i = 0; i < 3; ++i) in = in && p[i] >= padded.lo[i] && p[i] <= padded.hi[i];
+        outside_hits += !in;
+      }
+      EXPECT_EQ(outside_hits, 0) << mem.name << ": surface points outside the inferred bounds";
+    }
+}
+
+}  // namespace
+}  // namespace sdfc::conformance

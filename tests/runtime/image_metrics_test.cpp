@@ -1,0 +1,105 @@
+// sdfc compare's metrics on renders whose errors are known by construction,
+// written and read back through the real image files.
+#include <gtest/gtest.h>
+#include <sdfrt/image_io.hpp>
+#include <sdfrt/image_metrics.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <random>
+
+namespace sdfrt {
+namespace {
+
+constexpr int kW = 40, kH = 30;
+
+struct Scene {
+  FloatImage beauty{kW, kH, {"r", "g", "b"}};
+  FloatImage depth{kW, kH, {"depth"}};
+  FloatImage normal{kW, kH, {"normal.x", "normal.y", "normal.z"}};
+};
+
+// Hits in the left half (x < hit_columns) at depth 2 + x/10, normals along z
+// tilted by `tilt_deg` about y; a smooth colour ramp.
+Scene make(int hit_columns, double depth_scale, double tilt_deg, float colour_offset) {
+  Scene s;
+  double t = tilt_deg * M_PI / 180;
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      size_t i = size_t(y) * kW + x;
+      bool hit = x < hit_columns;
+      s.depth.plane(0)[i] = hit ? float((2 + x / 10.0) * depth_scale) : -1.0f;
+      s.normal.plane(0)[i] = hit ? float(std::sin(t)) : 0.0f;
+      s.normal.plane(2)[i] = hit ? float(std::cos(t)) : 0.0f;
+      s.beauty.plane(0)[i] = float(x * 4) / 255.0f + colour_offset;
+      s.beauty.plane(1)[i] = float(y * 4) / 255.0f + colour_offset;
+      s.beauty.plane(2)[i] = 0.2f + colour_offset;
+    }
+  return s;
+}
+
+std::string save(const Scene& s, const std::string& stem) {
+  auto dir = std::filesystem::path(::testing::TempDir()) / "metrics";
+  std::filesystem::create_directories(dir);
+  std::string png = (dir / (stem + ".png")).string();
+  write_png(png, s.beauty);
+  write_pfm((dir / (stem + ".depth.pfm")).string(), s.depth, 0);
+  write_pfm_rgb((dir / (stem + ".normal.pfm")).string(), s.normal, {0, 1, 2});
+  return png;
+}
+
+TEST(ImageMetrics, IdenticalRendersHaveNoError) {
+  std::string a = save(make(20, 1, 0, 0), "same_a"), b = save(make(20, 1, 0, 0), "same_b");
+  ComparisonMetrics m = compare_renders(load_render_outputs(a), load_render_outputs(b));
+  EXPECT_TRUE(m.has_depth && m.has_normal);
+  EXPECT_EQ(m.hit_mask_disagreement_pct, 0);
+  EXPECT_EQ(m.depth_rel_error_p99, 0);
+  EXPECT_NEAR(m.normal_error_deg_p99, 0, 0.05);  // float normals, re-normalised by nobody
+  EXPECT_TRUE(std::isinf(m.psnr_db));
+  EXPECT_DOUBLE_EQ(m.ssim, 1.0);
+  EXPECT_NE(format_json(m).find("\"psnr_db\": null"), std::string::npos);
+}
+
+TEST(ImageMetrics, KnownErrorsAreMeasured) {
+  // Test: 3 more hit columns, depths 0.1 % long, normals tilted 2 degrees,
+  // colours 51/255 = 0.2 brighter (exact in 8 bits).
+  std::string ref = save(make(20, 1, 0, 0), "ref"), test = save(make(23, 1.001, 2, 0.2f), "test");
+  ComparisonMetrics m = compare_renders(load_render_outputs(ref), load_render_outputs(test));
+  EXPECT_NEAR(m.hit_mask_disagreement_pct, 100.0 * 3 * kH / (kW * kH), 1e-9);
+  EXPECT_NEAR(m.depth_rel_error_median, 1e-3, 1e-6);  // float depths
+  EXPECT_NEAR(m.depth_rel_error_p99, 1e-3, 1e-6);
+  EXPECT_NEAR(m.normal_error_deg_median, 2.0, 0.01);
+  EXPECT_NEAR(m.psnr_db, 10 * std::log10(1 / 0.04), 0.05);  // MSE = 0.2^2 (blue and all in range)
+  EXPECT_LT(m.ssim, 1.0);
+  EXPECT_GT(m.ssim, 0.5);  // a brightness shift keeps the structure
+}
+
+TEST(ImageMetrics, SsimFallsWithNoiseAndSizesMustMatch) {
+  Scene a = make(20, 1, 0, 0), b = a;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> noise(-0.25f, 0.25f);
+  for (int c = 0; c < 3; ++c)
+    for (auto& v : b.beauty.plane(c)) v = std::clamp(v + noise(rng), 0.0f, 1.0f);
+  ComparisonMetrics m = compare_renders(load_render_outputs(save(a, "clean")), load_render_outputs(save(b, "noisy")));
+  EXPECT_LT(m.ssim, 0.6);
+  EXPECT_LT(m.psnr_db, 20);
+
+  Scene small;
+  small.beauty = FloatImage(kW / 2, kH, {"r", "g", "b"});
+  std::string p = (std::filesystem::path(::testing::TempDir()) / "metrics" / "small.png").string();
+  write_png(p, small.beauty);
+  EXPECT_THROW(compare_renders(load_render_outputs(save(a, "clean")), load_render_outputs(p)), std::invalid_argument);
+}
+
+TEST(ImageMetrics, WithoutAovsOnlyImageErrorsAreReported) {
+  Scene a = make(20, 1, 0, 0);
+  std::string p = (std::filesystem::path(::testing::TempDir()) / "metrics" / "plain.png").string();
+  std::filesystem::create_directories(std::filesystem::path(p).parent_path());
+  write_png(p, a.beauty);
+  ComparisonMetrics m = compare_renders(load_render_outputs(p), load_render_outputs(p));
+  EXPECT_FALSE(m.has_depth);
+  EXPECT_NE(format_table(m).find("no depth AOVs"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace sdfrt

@@ -1,0 +1,179 @@
+#include "sdfc_test_support.hpp"
+
+#include <CL/cl.h>
+#include <fmt/format.h>
+#include <stdlib.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+#include <stdexcept>
+
+#include "sdfc/compile.hpp"
+#include "sdfc/source/overrides.hpp"
+#include "sdfc/source/yaml_loader.hpp"
+
+namespace sdfc::test {
+
+sdfrt::Device& device() {
+  static sdfrt::Device dev = [] {
+    // Build every kernel from source unless the caller chose otherwise: the
+    // suites then test this build's compiler output, never a binary cached
+    // by an earlier run, and a cold run stays fast (writing cache entries
+    // makes PoCL generate binaries, which doubles the build time: ~75 s
+    // instead of ~30 s for conformance_tests with empty caches). PoCL's own
+    // kernel cache still makes warm runs quick. Child processes (the CLI
+    // test) inherit the setting.
+    ::setenv("SDFC_KERNEL_CACHE", "0", /*overwrite=*/0);
+    return sdfrt::open_device();
+  }();
+  return dev;
+}
+
+ir::Module compile_text(const std::string& yaml, const std::string& name, const std::vector<std::string>& overrides) {
+  SourceValue doc = load_yaml_text(yaml, name);
+  apply_overrides(doc, overrides);
+  return build_module(doc, name);
+}
+
+std::string read_text_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read " + path.string());
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// ---- probe ----------------------------------------------------------------
+
+namespace {
+
+void check(cl_int err, const char* what) {
+  if (err != CL_SUCCESS) throw std::runtime_error(fmt::format("{} failed with OpenCL error {}", what, err));
+}
+
+sdfrt::BufferHandle make_buffer(cl_context ctx, cl_mem_flags flags, size_t floats, const float* init) {
+  cl_int err = CL_SUCCESS;
+  cl_mem m = clCreateBuffer(ctx, flags | (init ? CL_MEM_COPY_HOST_PTR : 0), floats * sizeof(float),
+                            const_cast<float*>(init), &err);
+  check(err, "clCreateBuffer");
+  return sdfrt::BufferHandle(m);
+}
+
+}  // namespace
+
+Probe::Probe(const ir::Module& m, int simd_width) {
+  emitted_ = codegen::emit_opencl(m, {simd_width, true});
+  program_.emplace(sdfrt::build_program(device(), emitted_.source, ""));
+  kernel_.emplace(program_->kernel("sdfc_probe"));
+}
+
+ProbeResult Probe::run(const std::vector<V3>& points) {
+  const size_t w = static_cast<size_t>(emitted_.simd_width);
+  const size_t n = points.size();
+  const size_t padded = std::max<size_t>(w, (n + w - 1) / w * w);
+  std::vector<float> x(padded, 0.0f), y(padded, 0.0f), z(padded, 0.0f);
+  for (size_t i = 0; i < n; ++i) {
+    x[i] = static_cast<float>(points[i][0]);
+    y[i] = static_cast<float>(points[i][1]);
+    z[i] = static_cast<float>(points[i][2]);
+  }
+  cl_context ctx = device().context();
+  cl_command_queue q = device().queue();
+  auto bx = make_buffer(ctx, CL_MEM_READ_ONLY, padded, x.data());
+  auto by = make_buffer(ctx, CL_MEM_READ_ONLY, padded, y.data());
+  auto bz = make_buffer(ctx, CL_MEM_READ_ONLY, padded, z.data());
+  auto bd = make_buffer(ctx, CL_MEM_WRITE_ONLY, padded, nullptr);
+  auto bdm = make_buffer(ctx, CL_MEM_WRITE_ONLY, padded, nullptr);
+  auto bm = make_buffer(ctx, CL_MEM_WRITE_ONLY, padded, nullptr);
+  cl_mem args[6] = {bx.get(), by.get(), bz.get(), bd.get(), bdm.get(), bm.get()};
+  for (unsigned i = 0; i < 6; ++i) kernel_->set_arg(i, args[i]);
+  size_t global = padded / w;
+  check(clEnqueueNDRangeKernel(q, kernel_->get(), 1, nullptr, &global, nullptr, 0, nullptr, nullptr),
+        "clEnqueueNDRangeKernel(sdfc_probe)");
+  ProbeResult r;
+  r.d.resize(padded);
+  r.d_mat.resize(padded);
+  r.mat.resize(padded);
+  check(clEnqueueReadBuffer(q, bd.get(), CL_FALSE, 0, padded * sizeof(float), r.d.data(), 0, nullptr, nullptr),
+        "clEnqueueReadBuffer");
+  check(clEnqueueReadBuffer(q, bdm.get(), CL_FALSE, 0, padded * sizeof(float), r.d_mat.data(), 0, nullptr, nullptr),
+        "clEnqueueReadBuffer");
+  check(clEnqueueReadBuffer(q, bm.get(), CL_TRUE, 0, padded * sizeof(float), r.mat.data(), 0, nullptr, nullptr),
+        "clEnqueueReadBuffer");
+  r.d.resize(n);
+  r.d_mat.resize(n);
+  r.mat.resize(n);
+  return r;
+}
+
+double round_to_float(double x) {
+  // volatile: GCC 12.2 at -O2 (SLP vectorizer) drops the double->float->double
+  // round trip when it is written as plain casts over an array, which gave
+  // back the unrounded coordinates.
+  volatile float f = static_cast<float>(x);
+  return f;
+}
+
+V3 to_float_point(const V3& p) { return {round_to_float(p[0]), round_to_float(p[1]), round_to_float(p[2])}; }
+
+// ---- vectors --------------------------------------------------------------
+
+double norm(const V3& a) { return std::sqrt(dot(a, a)); }
+V3 normalize(const V3& a) { return mul(a, 1.0 / norm(a)); }
+
+Quat Quat::axis_angle(const V3& axis, double degrees) {
+  V3 u = normalize(axis);
+  double h = degrees * std::numbers::pi / 360.0;  // half angle
+  double s = std::sin(h);
+  return {std::cos(h), u[0] * s, u[1] * s, u[2] * s};
+}
+
+Quat Quat::operator*(const Quat& o) const {
+  return {w * o.w - x * o.x - y * o.y - z * o.z, w * o.x + x * o.w + y * o.z - z * o.y,
+          w * o.y - x * o.z + y * o.w + z * o.x, w * o.z + x * o.y - y * o.x + z * o.w};
+}
+
+V3 Quat::rotate(const V3& v) const {
+  Quat r = (*this) * Quat{0, v[0], v[1], v[2]} * conj();
+  return {r.x, r.y, r.z};
+}
+
+// ---- points ---------------------------------------------------------------
+
+V3 uniform_in(std::mt19937_64& rng, const V3& lo, const V3& hi) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  V3 p;
+  for (int i = 0; i < 3; ++i) p[i] = lo[i] + (hi[i] - lo[i]) * u(rng);
+  return p;
+}
+
+V3 random_unit(std::mt19937_64& rng) {
+  std::normal_distribution<double> g(0.0, 1.0);
+  V3 v{g(rng), g(rng), g(rng)};
+  return normalize(v);
+}
+
+// ---- files ----------------------------------------------------------------
+
+TempDir::TempDir() {
+  std::string pattern = (std::filesystem::temp_directory_path() / "sdfc-test-XXXXXX").string();
+  if (!::mkdtemp(pattern.data())) throw std::runtime_error("mkdtemp failed");
+  path_ = pattern;
+}
+
+TempDir::~TempDir() {
+  std::error_code ec;
+  std::filesystem::remove_all(path_, ec);
+}
+
+std::vector<std::string> TempDir::file_names() const {
+  std::vector<std::string> names;
+  for (const auto& e : std::filesystem::directory_iterator(path_)) names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+}  // namespace sdfc::test
