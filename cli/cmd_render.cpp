@@ -8,7 +8,10 @@
 #include <filesystem>
 #include <atomic>
 #include <csignal>
+#include <fstream>
 #include <iostream>
+#include <sstream>
+#include <unistd.h>
 #include <sdfrt/device.hpp>
 #include <sdfrt/errors.hpp>
 #include <sdfrt/image_io.hpp>
@@ -27,6 +30,18 @@ namespace {
 std::atomic<bool> g_cancel{false};
 extern "C" void on_sigint(int) { g_cancel = true; }
 
+// PoCL calls abort() when it cannot write its own kernel cache (a full disk,
+// `ulimit -f`): say what probably happened, then die as before.
+extern "C" void on_driver_abort(int) {
+  static const char msg[] =
+      "sdfc: the OpenCL driver aborted. With PoCL this usually means it could not write its kernel cache "
+      "(full disk or file size limit; the cache is in $POCL_CACHE_DIR or ~/.cache/pocl)\n";
+  ssize_t ignored = write(2, msg, sizeof msg - 1);
+  (void)ignored;
+  std::signal(SIGABRT, SIG_DFL);
+  std::raise(SIGABRT);
+}
+
 struct RenderArgs {
   SceneArgs scene;
   std::string output;
@@ -40,7 +55,30 @@ struct RenderArgs {
   std::vector<std::string> aovs;
   std::string frames;
   double fps = 30;
+  std::string kernel_file;  // a hand-edited kernel to build instead of the generated one
 };
+
+std::string read_kernel_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::invalid_argument(fmt::format("--kernel: cannot read {}", path));
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// The whole image lives in host memory (the device only holds one tile), so
+// refuse sizes the machine cannot hold before allocating anything.
+void check_host_memory(int w, int h, size_t planes) {
+  const double bytes = double(w) * double(h) * double(planes) * sizeof(float);
+  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+  if (pages <= 0 || page <= 0) return;
+  const double usable = 0.75 * double(pages) * double(page);
+  if (bytes > usable)
+    throw sdfrt::DeviceError(fmt::format("a {}x{} image with {} planes needs {:.1f} GiB of memory, more than this "
+                                         "machine can give ({:.1f} GiB); render a smaller image",
+                                         w, h, planes, bytes / 1073741824.0, usable / 1073741824.0));
+}
+
 
 int run_render(RenderArgs a) {
   // --width/--height are overrides like any other, so they are validated alike.
@@ -49,6 +87,7 @@ int run_render(RenderArgs a) {
   SourceValue doc = load_scene_source(a.scene.path, a.scene.sets);
   ir::Module m = build_module(doc, a.scene.path);
 
+  std::signal(SIGABRT, on_driver_abort);
   sdfrt::Device device = sdfrt::open_device(a.device.empty() ? std::nullopt : std::optional<std::string>(a.device));
   bool cpu = device.info().type == sdfrt::DeviceType::Cpu;
   int width = a.simd_width > 0 ? a.simd_width : default_simd_width(cpu);
@@ -59,6 +98,7 @@ int run_render(RenderArgs a) {
   eo.simd_width = width;
   eo.aovs = !a.aovs.empty();
   codegen::EmittedKernel k = codegen::emit_opencl(m, eo);
+  if (!a.kernel_file.empty()) k.source = read_kernel_file(a.kernel_file);
   sdfrt::KernelSpec spec{k.source, k.entry, k.simd_width, k.planes, ""};
   // One build serves every frame: time and the camera are frame parameters.
   sdfrt::Renderer renderer(device, spec);
@@ -70,6 +110,7 @@ int run_render(RenderArgs a) {
   const int w = m.plan.march.width, h = m.plan.march.height;
   std::signal(SIGINT, on_sigint);
   if (a.repeat > 0) {
+    check_host_memory(w, h, k.planes.size());  // --repeat holds whole images in memory
     std::vector<float> frame = codegen::frame_params(m.plan, w, h, 0.0);
     sdfrt::RenderOptions opt;
     opt.tile_width = opt.tile_height = a.tile;
@@ -149,6 +190,9 @@ Action add_render(CLI::App& app) {
   cmd->add_option("--frames", a->frames, "Render frames N, FIRST:LAST or FIRST:LAST:STEP at time = frame / fps; "
                                          "-o then needs a field such as %04d");
   cmd->add_option("--fps", a->fps, "Frames per second for --frames (default 30)")->check(CLI::Range(0.001, 10000.0));
+  cmd->add_option("--kernel", a->kernel_file,
+                  "Build this OpenCL file instead of the generated kernel (a hand-edited 'sdfc compile' output "
+                  "for the same scene and --simd-width)");
   return [a] { return run_render(*a); };
 }
 

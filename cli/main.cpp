@@ -2,7 +2,9 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <csignal>
 #include <iostream>
+#include <new>
 #include <sdfrt/errors.hpp>
 
 #include "commands.hpp"
@@ -10,6 +12,9 @@
 
 int main(int argc, char** argv) {
   using namespace sdfc::cli;
+  // Past `ulimit -f`, a write should fail with EFBIG (reported, temp file
+  // removed) rather than the process being killed half-way.
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"sdfc: compiles signed-distance and fractal scenes (YAML) to one OpenCL kernel and renders them",
                "sdfc"};
   app.footer(
@@ -56,6 +61,9 @@ int main(int argc, char** argv) {
   } catch (const sdfrt::Cancelled&) {
     std::cerr << "sdfc: cancelled\n";
     return 130;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "sdfc: out of memory\n";
+    return kDeviceError;
   } catch (const std::invalid_argument& e) {
     std::cerr << "sdfc: " << e.what() << "\n";
     return kUsageError;

@@ -1,6 +1,9 @@
 #include "sdfc/compile.hpp"
 
+#include <fmt/format.h>
+
 #include <chrono>
+#include <vector>
 
 #include "sdfc/frontend/lower_scene.hpp"
 #include "sdfc/source/overrides.hpp"
@@ -9,6 +12,29 @@
 namespace sdfc {
 
 namespace {
+// The kernel holds one statement per node on every path from the root (a
+// shared subtree is written out at each use), and PoCL's build time grows
+// faster than that count: 1 000 translated spheres (2 002 statements) build in
+// 16 s, 10 000 in 365 s (2 busy cores). Refuse before emitting.
+constexpr double kMaxKernelNodes = 4096;
+
+void check_kernel_size(const ir::Module& m) {
+  if (m.root == ir::kNoNode) return;
+  const ir::Graph& g = *m.graph;
+  std::vector<double> paths(g.size(), 0);  // double: alias-built trees can exceed any integer
+  for (ir::NodeId id : g.postorder(m.root)) {
+    double n = 1;
+    for (ir::NodeId c : g.node(id).children) n += paths[c];
+    paths[id] = n;
+  }
+  if (paths[m.root] > kMaxKernelNodes)
+    fail(g.node(m.root).loc,
+         fmt::format("the scene makes a kernel of {:.0f} node evaluations, more than the limit of {:.0f}: the OpenCL "
+                     "build time grows faster than the kernel (10 000 spheres take minutes to build)",
+                     paths[m.root], kMaxKernelNodes),
+         "use fewer, larger shapes or split the scene");
+}
+
 double ms_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -29,6 +55,7 @@ ir::Module build_module(const SourceValue& doc, const std::string& source_name, 
   auto t1 = std::chrono::steady_clock::now();
   m = passes::run_pipeline(std::move(m), after, t ? &t->per_pass : nullptr);
   if (t) t->passes_ms = ms_since(t1);
+  check_kernel_size(m);
   return m;
 }
 

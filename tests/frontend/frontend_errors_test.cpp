@@ -1,4 +1,4 @@
-// Every class of scene mistake gives the right message at the right place.
+// Diagnostics of the front end: their format, several at once, hints.
 #include <gtest/gtest.h>
 
 #include "scene_text.hpp"

@@ -62,7 +62,10 @@ NodeId apply_domain_modifiers(ValueReader& r, ir::Builder& b, const SourceValue&
         r.sink().error(e->loc, "displace.expr: expected an expression of x, y, z such as \"0.05*sin(10*x)\", got " + e->kind_name(), "");
       } else {
         try {
-          expr::ExprPtr ex = expr::fold(expr::parse(e->scalar, e->loc, {"x", "y", "z"}));
+          // A quoted string's location is its opening quote; columns count from the text.
+          SourceLoc at = e->loc;
+          if (e->quoted) at.column += 1;
+          expr::ExprPtr ex = expr::fold(expr::parse(e->scalar, at, {"x", "y", "z"}));
           b.graph().expressions.push_back(ex);
           n = wrap(Kind::Displace, {double(b.graph().expressions.size() - 1)}, *v);
         } catch (const SceneError& err) {

@@ -70,7 +70,8 @@ Mat3 axis_angle(const Vec3d& a, double deg) {
 
 NodeId GeometryLowering::lower(const SourceValue& v) {
   if (!v.is_map()) {
-    r_.sink().error(v.loc, "expected a geometry node (a map such as '{sphere: {radius: 1}}'), got " + v.kind_name(), "");
+    r_.sink().error(v.loc, "expected a geometry node (a map such as '{sphere: {radius: 1}}'), got " + v.kind_name(),
+                    v.is_seq() ? "to combine several shapes, list them under 'union:'" : "");
     return ir::kNoNode;
   }
   const SourceValue* kind_key = nullptr;

@@ -58,7 +58,13 @@ int ValueReader::integer(const SourceValue& v, std::string_view what, int lo, in
     return lo;
   }
   errno = 0;
-  long long x = std::strtoll(v.scalar.c_str(), nullptr, 10);
+  char* end = nullptr;
+  long long x = std::strtoll(v.scalar.c_str(), &end, 10);
+  // strtoll stops at the first character it cannot use: "5-5" is not a number.
+  if (end != v.scalar.c_str() + v.scalar.size()) {
+    sink_.error(v.loc, fmt::format("{}: expected a whole number, got '{}'", what, v.scalar), "");
+    return lo;
+  }
   if (errno == ERANGE || x < lo || x > hi) {
     sink_.error(v.loc, fmt::format("{}: expected a whole number from {} to {}, got {}", what, lo, hi, v.scalar), "");
     return lo;

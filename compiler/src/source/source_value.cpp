@@ -4,6 +4,13 @@
 
 namespace sdfc {
 
+SourceValue::SourceValue() = default;
+SourceValue::SourceValue(const SourceValue&) = default;
+SourceValue::SourceValue(SourceValue&&) noexcept = default;
+SourceValue& SourceValue::operator=(const SourceValue&) = default;
+SourceValue& SourceValue::operator=(SourceValue&&) noexcept = default;
+SourceValue::~SourceValue() = default;
+
 const SourceValue* SourceValue::find(std::string_view key) const {
   for (const auto& [k, v] : entries)
     if (k.scalar == key) return &v;

@@ -1,6 +1,7 @@
 #include "sdfc/source/yaml_loader.hpp"
 
 #include <fmt/format.h>
+#include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/yaml.h>
 
 #include <filesystem>
@@ -13,16 +14,28 @@ namespace {
 
 // Deeper than any sensible scene; stops a hostile file from exhausting the stack.
 constexpr int kMaxDepth = 200;
+constexpr const char* kFlattenHint = "flatten it: a union takes any number of children";
+// Aliases are copied where they are used, so a few lines of nested aliases
+// ("billion laughs") could expand to billions of values. A scene at the
+// kernel size limit (4096 node evaluations) holds far fewer.
+constexpr size_t kMaxValues = 200'000;
+
+struct Budget {
+  size_t values = 0;
+};
 
 SourceLoc loc_of(const YAML::Mark& m, const std::shared_ptr<const std::string>& file) {
   return {file, m.line >= 0 ? m.line + 1 : 0, m.column >= 0 ? m.column + 1 : 0};
 }
 
-SourceValue convert(const YAML::Node& n, const std::shared_ptr<const std::string>& file, int depth) {
+SourceValue convert(const YAML::Node& n, const std::shared_ptr<const std::string>& file, int depth, Budget& budget) {
   SourceValue v;
   v.loc = loc_of(n.Mark(), file);
   if (depth > kMaxDepth)
-    fail(v.loc, fmt::format("the scene nests deeper than {} levels", kMaxDepth), "");
+    fail(v.loc, fmt::format("the scene nests deeper than {} levels", kMaxDepth), kFlattenHint);
+  if (++budget.values > kMaxValues)
+    fail(v.loc, fmt::format("the scene has more than {} values once its aliases (*name) are expanded", kMaxValues),
+         "use fewer or less deeply nested aliases");
   switch (n.Type()) {
     case YAML::NodeType::Undefined:
     case YAML::NodeType::Null: v.kind = SourceValue::Kind::Null; break;
@@ -33,17 +46,22 @@ SourceValue convert(const YAML::Node& n, const std::shared_ptr<const std::string
       break;
     case YAML::NodeType::Sequence:
       v.kind = SourceValue::Kind::Sequence;
-      for (const auto& item : n) v.items.push_back(convert(item, file, depth + 1));
+      for (const auto& item : n) v.items.push_back(convert(item, file, depth + 1, budget));
       break;
     case YAML::NodeType::Map:
       v.kind = SourceValue::Kind::Map;
       for (const auto& kv : n) {
-        SourceValue key = convert(kv.first, file, depth + 1);
+        SourceValue key = convert(kv.first, file, depth + 1, budget);
         if (!key.is_scalar())
           fail(key.loc, "a map key must be a plain word, not " + key.kind_name(), "");
         if (v.find(key.scalar))
           fail(key.loc, "duplicate key '" + key.scalar + "'", "each key may appear once in a map");
-        v.entries.emplace_back(std::move(key), convert(kv.second, file, depth + 1));
+        SourceValue value = convert(kv.second, file, depth + 1, budget);
+        // An empty value ("scene:" then nothing) is marked where the next
+        // token starts, often a later line; point just past its key instead.
+        if (value.is_null() && value.loc.line != key.loc.line)
+          value.loc = SourceLoc(file, key.loc.line, key.loc.column + int(key.scalar.size()));
+        v.entries.emplace_back(std::move(key), std::move(value));
       }
       break;
   }
@@ -77,12 +95,16 @@ SourceValue load_yaml_text(const std::string& text, const std::string& name) {
   YAML::Node root;
   try {
     root = YAML::Load(text);
+  } catch (const YAML::DeepRecursion& e) {
+    // yaml-cpp's own guard (deeper than ours, so the same message fits).
+    fail(loc_of(e.mark, file), fmt::format("the scene nests deeper than {} levels", kMaxDepth), kFlattenHint);
   } catch (const YAML::Exception& e) {
     fail(loc_of(e.mark, file), "YAML syntax error: " + e.msg);
   }
   if (!root.IsDefined() || root.IsNull())
     fail(SourceLoc(file, 1, 1), "the scene file is empty", "a scene needs at least a 'scene:' key");
-  return convert(root, file, 0);
+  Budget budget;
+  return convert(root, file, 0, budget);
 }
 
 SourceValue load_yaml_file(const std::string& path) {

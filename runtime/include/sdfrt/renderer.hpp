@@ -35,6 +35,7 @@ struct RenderOptions {
   int tile_height = 256;
   std::function<void(int done, int total)> progress;  // called with (0,total) first, then per tile
   std::atomic<bool>* cancel = nullptr;               // checked before every tile
+  FloatImage* partial = nullptr;  // on cancel, receives the tiles done so far (the rest is zero)
   // Launch edge tiles with the full tile size too (tile_w/tile_h/out_stride
   // then describe the full tile; pixels past the image are computed and
   // dropped). PoCL compiles a work-group function per launch shape, so this

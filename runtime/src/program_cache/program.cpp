@@ -40,6 +40,11 @@ std::string build_log_of(cl_program program, cl_device_id device) {
   message += log.empty() ? "(the driver gave no build log)" : log;
   if (const std::string quoted = quote_error_lines(log, source); !quoted.empty()) {
     message += "\n--- generated kernel source at the errors ---\n" + quoted;
+  } else if (log.find("error") == std::string::npos) {
+    // No compiler diagnostic at all: the driver itself failed, not the source.
+    message += "\n(no compiler error in the log: the driver itself failed. PoCL does this when it cannot write "
+               "its kernel cache: a full disk or a file size limit; the cache is in $POCL_CACHE_DIR or "
+               "~/.cache/pocl)";
   }
   throw BuildError(message, log);
 }

@@ -125,7 +125,10 @@ FloatImage Renderer::render(const std::vector<float>& frame, int width, int heig
   std::vector<float> host(max_floats);
 
   for (int t = 0; t < total; ++t) {
-    if (options.cancel && options.cancel->load()) throw Cancelled();
+    if (options.cancel && options.cancel->load()) {
+      if (options.partial) *options.partial = std::move(image);
+      throw Cancelled();
+    }
     const Tile& tile = plan.tiles[static_cast<std::size_t>(t)];
     // What the kernel is told and launched with: the tile itself, or the
     // full tile size when uniform (the excess lands in ignored rows/lanes).

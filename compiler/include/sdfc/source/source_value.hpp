@@ -14,6 +14,15 @@ namespace sdfc {
 struct SourceValue {
   enum class Kind { Null, Scalar, Sequence, Map };
 
+  // Out of line: clang with libstdc++ cannot instantiate the pair of this
+  // still-incomplete type for implicit special members declared in the class.
+  SourceValue();
+  SourceValue(const SourceValue&);
+  SourceValue(SourceValue&&) noexcept;
+  SourceValue& operator=(const SourceValue&);
+  SourceValue& operator=(SourceValue&&) noexcept;
+  ~SourceValue();
+
   Kind kind = Kind::Null;
   SourceLoc loc;
   std::string scalar;   // Scalar text

@@ -1,0 +1,189 @@
+// Device and system failures as a user meets them through the sdfc binary:
+// no OpenCL platform, an unknown device, a kernel that does not build, an
+// unwritable output, a full disk, Ctrl-C during a render.
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <thread>
+
+#include "run_sdfc.hpp"
+
+namespace sdfc::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Only the named entries remain in `dir` (no temp files left behind).
+std::vector<std::string> entries(const std::string& dir) {
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+void expect_no_exception_text(const RunResult& r) {
+  for (const char* bad : {"terminate called", "what():", "internal error", "Sanitizer"})
+    EXPECT_EQ(r.err.find(bad), std::string::npos) << r.err;
+}
+
+TEST(SystemFailures, NoOpenCLPlatformExitsThreeWithAHint) {
+  ScratchDir vendors;  // an ICD directory with no drivers in it
+  ScratchDir out;
+  std::string env = "OCL_ICD_VENDORS=" + vendors.path() + " ";
+  RunResult r = run_sdfc("render examples/mandelbulb.yaml --width 32 --height 18 -q -o " + out.file("m.png"), env);
+  EXPECT_EQ(r.code, 3) << r.err;
+  EXPECT_NE(r.err.find("no OpenCL platform"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("pocl-opencl-icd"), std::string::npos) << "should say what to install: " << r.err;
+  EXPECT_EQ(r.err.find("CL_"), std::string::npos) << "no OpenCL error code: " << r.err;
+  EXPECT_TRUE(entries(out.path()).empty());
+  expect_no_exception_text(r);
+
+  RunResult d = run_sdfc("devices", env);
+  EXPECT_EQ(d.code, 3) << d.err;
+  EXPECT_NE(d.err.find("no OpenCL device found"), std::string::npos) << d.err;
+  EXPECT_NE(d.err.find("pocl-opencl-icd"), std::string::npos) << d.err;
+}
+
+TEST(SystemFailures, UnknownDeviceNameExitsThreeListingTheDevices) {
+  RunResult r = run_sdfc("render examples/mandelbulb.yaml -q -o /tmp/never.png --device no-such-gpu");
+  EXPECT_EQ(r.code, 3) << r.err;
+  EXPECT_NE(r.err.find("no-such-gpu"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("0:0"), std::string::npos) << "should list the ids that exist: " << r.err;
+  expect_no_exception_text(r);
+}
+
+TEST(SystemFailures, KernelBuildFailureShowsTheLogAndTheKernelLines) {
+  ScratchDir dir;
+  RunResult c = run_sdfc("compile examples/primitives.yaml -o " + dir.file("k.cl"));
+  ASSERT_EQ(c.code, 0) << c.err;
+  // Break one line the way a hand edit might: an undeclared name.
+  std::string src = read_text(dir.file("k.cl"));
+  size_t at = src.find("real scene_dist(");
+  ASSERT_NE(at, std::string::npos);
+  size_t body = src.find('{', at);
+  src.insert(body + 1, "\n  real broken_here = undeclared_thing * 2.0f;");
+  dir.write("broken.cl", src);
+  RunResult r = run_sdfc("render examples/primitives.yaml --width 32 --height 18 -q --kernel " + dir.file("broken.cl") +
+                         " -o " + dir.file("p.png"));
+  EXPECT_EQ(r.code, 3) << r.err;
+  EXPECT_NE(r.err.find("undeclared_thing"), std::string::npos) << "the log and the kernel line: " << r.err;
+  EXPECT_NE(r.err.find("generated kernel source at the errors"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir.file("p.png")));
+  expect_no_exception_text(r);
+}
+
+TEST(SystemFailures, UnreadableKernelFileIsAUsageError) {
+  RunResult r = run_sdfc("render examples/primitives.yaml -q --kernel /nonexistent/k.cl -o /tmp/never.png");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("cannot read /nonexistent/k.cl"), std::string::npos) << r.err;
+}
+
+TEST(SystemFailures, OutputIntoAFileAsDirectoryExitsFour) {
+  ScratchDir dir;
+  dir.write("plain", "x");
+  RunResult r = run_sdfc("render examples/primitives.yaml --width 32 --height 18 -q -o " + dir.file("plain/p.png"));
+  EXPECT_EQ(r.code, 4) << r.err;
+  EXPECT_NE(r.err.find(dir.file("plain/p.png")), std::string::npos) << "names the path: " << r.err;
+  EXPECT_EQ(entries(dir.path()), std::vector<std::string>{"plain"});
+  expect_no_exception_text(r);
+}
+
+// `ulimit -f` makes writes past the limit fail with EFBIG, like a full disk.
+TEST(SystemFailures, FileSizeLimitExitsFourLeavingNoFileAndTheOldOneIntact) {
+  ScratchDir dir;
+  dir.write("k.cl", "the previous kernel");
+  RunResult r = run_sdfc("compile examples/primitives.yaml -o " + dir.file("k.cl"), "ulimit -f 4; ");
+  EXPECT_EQ(r.code, 4) << r.err;
+  EXPECT_NE(r.err.find("too large"), std::string::npos) << "strerror(EFBIG): " << r.err;
+  EXPECT_EQ(entries(dir.path()), std::vector<std::string>{"k.cl"}) << "no temp file left";
+  EXPECT_EQ(read_text(dir.file("k.cl")), "the previous kernel");
+  expect_no_exception_text(r);
+}
+
+// A really full disk: a 16 KiB tmpfs (needs root and a kernel that lets us mount).
+TEST(SystemFailures, FullDiskExitsFourLeavingNoFileAndTheOldImageIntact) {
+  ScratchDir dir;
+  if (geteuid() != 0 || std::system(("mount -t tmpfs -o size=16k tmpfs " + dir.path() + " 2>/dev/null").c_str()) != 0)
+    GTEST_SKIP() << "cannot mount a small tmpfs here (needs root)";
+  dir.write("p.png", "the previous image");
+  RunResult r = run_sdfc("render examples/primitives.yaml --width 320 --height 200 -q -o " + dir.file("p.png"));
+  EXPECT_EQ(r.code, 4) << r.err;
+  EXPECT_NE(r.err.find("No space left on device"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(dir.file("p.png")), std::string::npos) << "names the path: " << r.err;
+  EXPECT_EQ(entries(dir.path()), std::vector<std::string>{"p.png"}) << "no temp file left";
+  EXPECT_EQ(read_text(dir.file("p.png")), "the previous image");
+  expect_no_exception_text(r);
+  EXPECT_EQ(std::system(("umount " + dir.path()).c_str()), 0);
+}
+
+// PoCL cannot write its kernel cache: with a cold cache the build fails
+// without a compiler diagnostic (exit 3); with the program cached but not
+// its work-group function, PoCL aborts at launch. Either way the user is
+// told what probably happened, and nothing is written.
+TEST(SystemFailures, FullDiskDuringTheDriversKernelBuildIsExplained) {
+  ScratchDir dir, pocl_cache;
+  RunResult r = run_sdfc("render examples/primitives.yaml --width 64 --height 40 -q -o " + dir.file("p.png"),
+                         "export POCL_CACHE_DIR=" + pocl_cache.path() + " SDFC_KERNEL_CACHE=0; ulimit -f 4; ");
+  if (r.code == 3) {
+    EXPECT_NE(r.err.find("the driver itself failed"), std::string::npos) << r.err;
+  } else {
+    EXPECT_EQ(r.code, 128 + SIGABRT) << r.err;
+    EXPECT_NE(r.err.find("the OpenCL driver aborted"), std::string::npos) << r.err;
+  }
+  EXPECT_NE(r.err.find("full disk or"), std::string::npos) << r.err;
+  EXPECT_TRUE(entries(dir.path()).empty());
+}
+
+struct Interrupted {
+  int code;
+  std::string err;
+};
+
+// Starts a long render, waits until its progress shows tiles done, sends
+// SIGINT (what Ctrl-C does) and returns how it ended.
+Interrupted render_and_interrupt(const ScratchDir& dir, const std::string& extra) {
+  std::string err_path = dir.file("stderr");
+  std::string out_png = dir.file("big.png");
+  std::vector<std::string> args = {SDFC_BINARY, "render", "examples/mandelbulb.yaml", "--width", "1024", "--height",
+                                   "1024", "--tile", "16", "-o", out_png};
+  if (!extra.empty()) args.push_back(extra);
+  pid_t pid = fork();
+  if (pid == 0) {
+    if (chdir(SDFC_SOURCE_DIR) != 0) _exit(120);
+    int fd = open(err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    dup2(fd, 2);
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    execv(argv[0], argv.data());
+    _exit(121);
+  }
+  // Readiness wait, not a timing assertion: the progress lines appear once
+  // the kernel is built and a tenth of the tiles are done.
+  auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(3);
+  while (read_text(err_path).find(" tiles ") == std::string::npos && std::chrono::steady_clock::now() < deadline) {
+    int st = 0;
+    if (waitpid(pid, &st, WNOHANG) == pid) return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, read_text(err_path)};
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  kill(pid, SIGINT);
+  int st = 0;
+  waitpid(pid, &st, 0);
+  return {WIFEXITED(st) ? WEXITSTATUS(st) : 128 + WTERMSIG(st), read_text(err_path)};
+}
+
+TEST(SystemFailures, CtrlCLeavesNothingAtTheFinalName) {
+  ScratchDir dir;
+  Interrupted r = render_and_interrupt(dir, "");
+  EXPECT_EQ(r.code, 130) << r.err;
+  EXPECT_NE(r.err.find("sdfc: cancelled"), std::string::npos) << r.err;
+  EXPECT_EQ(entries(dir.path()), std::vector<std::string>{"stderr"});
+}
+
+}  // namespace
+}  // namespace sdfc::test
