@@ -89,12 +89,16 @@ inline real de_mandelbulb_int(vec3 p, int power, int iterations, real bailout, r
     return SEL(de, r0 - set_radius, r0 > 1.5f * set_radius);
 }
 
-//! fn de_juliabulb
+//! fn bulb_de_trig
 //! deps: vec3_ops
 //! class: estimate
-// The Juliabulb for any real power: z <- z^n + c with the White-Nylander
-// trig formula, dr <- n r^(n-1) dr (c is constant, so no + 1).
-inline real de_juliabulb(vec3 p, real power, int iterations, real bailout, real set_radius, vec3 c)
+// The White-Nylander orbit z <- z^n + c for any real power, with the trig
+// formula and the running derivative dr <- n r^(n-1) dr + dr_add, then
+// d = 0.5 log(r) r / dr. The Mandelbulb adds c = p (so dr_add = 1), the
+// Juliabulb a constant c (dr_add = 0). Lanes leave the loop as they pass the
+// bailout. Beyond 1.5x the radius that holds the set the potential estimate
+// overshoots, so the distance to that ball (a true lower bound) is returned.
+inline real bulb_de_trig(vec3 p, vec3 c, real dr_add, real power, int iterations, real bailout, real set_radius)
 {
     vec3 z = p;
     real dr = 1.0f;
@@ -105,7 +109,7 @@ inline real de_juliabulb(vec3 p, real power, int iterations, real bailout, real 
         real theta = acos(clamp(z.z / rs, K(-1.0f), K(1.0f))) * power;
         real phi = atan2(z.y, z.x) * power;
         real rp = pow(rs, power - 1.0f);
-        real dr_next = rp * power * dr;
+        real dr_next = rp * power * dr + dr_add;
         real zr = rp * rs;
         real st = sin(theta);
         vec3 z_next = v3(zr * st * cos(phi) + c.x, zr * st * sin(phi) + c.y, zr * cos(theta) + c.z);
@@ -117,6 +121,15 @@ inline real de_juliabulb(vec3 p, real power, int iterations, real bailout, real 
     real de = 0.5f * log(fmax(r, K(1e-20f))) * r / dr;
     real r0 = v3_length(p);
     return SEL(de, r0 - set_radius, r0 > 1.5f * set_radius);
+}
+
+//! fn de_juliabulb
+//! deps: bulb_de_trig
+//! class: estimate
+// The Juliabulb for any real power: z <- z^n + c (c constant, so no + 1 in dr).
+inline real de_juliabulb(vec3 p, real power, int iterations, real bailout, real set_radius, vec3 c)
+{
+    return bulb_de_trig(p, c, 0.0f, power, iterations, bailout, set_radius);
 }
 
 //! fn de_quaternion_julia
