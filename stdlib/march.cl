@@ -73,3 +73,16 @@ inline vec3 normal_central(vec3 p, real h)
     real dz = scene_dist(v3(p.x, p.y, p.z + h)) - scene_dist(v3(p.x, p.y, p.z - h));
     return v3_normalize(v3(dx, dy, dz));
 }
+
+//! fn ray_box_exit
+//! deps: vec3_ops, ray_box
+//! class: helper
+// Where a ray from inside (or near) the box [lo, hi] leaves it, capped at
+// tmax; 0 when the ray misses the box, so a shadow ray stops where nothing
+// can block it any more.
+inline real ray_box_exit(vec3 ro, vec3 rd, vec3 lo, vec3 hi, real tmax)
+{
+    real t0, t1;
+    mask meets = ray_box(ro, rd, lo, hi, &t0, &t1);
+    return SEL((real)(0.0f), fmin(t1, tmax), meets);
+}

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <optional>
 #include <set>
 #include <stdexcept>
 
@@ -24,13 +25,37 @@ namespace {
 using detail::CodeWriter;
 using detail::Literals;
 
+// The material id of every hit when the whole scene carries one material
+// (the root, looking through bounding boxes, is a material node and no other
+// material node is reachable): then the hit needs no scene_dist_mat call.
+std::optional<double> uniform_material(const ir::Module& m) {
+  const ir::Graph& g = *m.graph;
+  ir::NodeId id = m.root;
+  while (g.node(id).kind == ir::Kind::Bounded) id = g.node(id).children[0];
+  if (g.node(id).kind != ir::Kind::Material) return std::nullopt;
+  int materials = 0;
+  for (ir::NodeId n : g.postorder(m.root)) materials += g.node(n).kind == ir::Kind::Material;
+  if (materials != 1) return std::nullopt;
+  return g.node(id).params[0];
+}
+
+// The box rays march in: the scene's inferred bounds padded by 1% of their
+// size plus a little, since the hit test accepts points up to an epsilon
+// outside the surface. None for an unbounded scene.
+std::optional<ir::Box3> march_bounds(const ir::Module& m) {
+  const ir::Props& root = m.graph->node(m.root).props;
+  if (!root.bounds.finite()) return std::nullopt;
+  double ext = 0;
+  for (int i = 0; i < 3; ++i) ext = std::max(ext, root.bounds.hi[i] - root.bounds.lo[i]);
+  return root.bounds.padded(0.01 * ext + 1e-3);
+}
+
 // One ray segment: bounds, march, shading at the hit, background on a miss,
 // and the effects that belong to a segment (AO, glow, fog). The primary ray
 // and every reflection bounce run through it.
 std::string segment_function(const ir::Module& m, const Literals& lit, std::set<std::string>& used) {
   const ir::MarchSettings& s = m.plan.march;
   const ir::Effects& fx = m.plan.effects;
-  const ir::Props& root = m.graph->node(m.root).props;
   bool any_shadows = false;
   for (const auto& l : m.plan.lights) any_shadows |= l.shadows != ir::Light::Shadows::None;
   CodeWriter w;
@@ -39,12 +64,8 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
                      fx.glow.enabled ? " real glow_weight," : ""));
   w.line("                  real* t_out, mask* hit_out, vec3* n_out, real* mat_out, real* steps_out)");
   w.open("{");
-  if (root.bounds.finite()) {
-    // Pad by 1% of the size plus a little: the hit test accepts points up to
-    // an epsilon outside the surface.
-    double ext = 0;
-    for (int i = 0; i < 3; ++i) ext = std::max(ext, root.bounds.hi[i] - root.bounds.lo[i]);
-    ir::Box3 b = root.bounds.padded(0.01 * ext + 1e-3);
+  if (auto bounds = march_bounds(m)) {
+    const ir::Box3& b = *bounds;
     used.insert("ray_box");
     w.line("// march only where the ray crosses the scene's bounds (inferred from the IR)");
     w.line("real t0, t1;");
@@ -89,8 +110,12 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
     used.insert(normal_fn);
     w.line(fmt::format("n = {}(pos, h);", normal_fn));
   }
-  w.line("real id;");
-  w.line("(void)scene_dist_mat(pos, &id);");
+  if (auto uni = uniform_material(m)) {
+    w.line(fmt::format("real id = {};  // the scene's one material: no distance evaluation needed", lit.typed(*uni)));
+  } else {
+    w.line("real id;");
+    w.line("(void)scene_dist_mat(pos, &id);");
+  }
   w.line("mat = SEL(mat, id, hit);");
   bool traps = false;
   for (const auto& md : m.plan.materials) traps = traps || !md.trap_palette.empty();
@@ -113,7 +138,7 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
     }
     extra += ", occlusion";
   }
-  if (any_shadows) extra += ", h";
+  if (any_shadows) extra += ", h, hit";
   if (!any_shadows) w.line("(void)h;");
   w.line(fmt::format("vec3 lit = shade_surface(pos, n, v3_scale(rd, -1.0f), id{});", extra));
   w.line("color = v3_select(color, lit, hit);");
@@ -352,7 +377,8 @@ EmittedKernel emit_opencl(const ir::Module& m, const EmitOptions& opt) {
   std::set<std::string> used;
   std::string scene = detail::emit_scene_functions(m, lit, used);
   if (m.plan.march.normals == ir::NormalMethod::Dual) scene += "\n" + detail::emit_scene_gradient(m, lit, used);
-  std::string shading = detail::emit_shading(m.plan, lit, used);
+  std::optional<ir::Box3> bounds = march_bounds(m);
+  std::string shading = detail::emit_shading(m.plan, lit, bounds ? &*bounds : nullptr, used);
   std::string kernel = segment_function(m, lit, used) + "\n" + radiance_function(m, used) + "\n" +
                        render_kernel(m, lit, used, opt.aovs);
   if (opt.probe_kernel) kernel += "\n" + probe_kernel();

@@ -135,8 +135,13 @@ std::string emit_fractal_trap(const ir::Node& n, const std::string& p, const Lit
   };
   switch (n.kind) {
     case Kind::Mandelbulb:
+      if (integer_power(q[0]))  // trig-free, like the distance
+        return fmt::format("{}({}, {}, {}, {}, 0, v3_splat(0.0f))", call("trap_mandelbulb_int"), p, int(q[0]), int(q[1]), r(2));
       return fmt::format("{}({}, {}, {}, {}, 0, v3_splat(0.0f))", call("trap_mandelbulb"), p, r(0), int(q[1]), r(2));
     case Kind::Juliabulb:
+      if (integer_power(q[0]))
+        return fmt::format("{}({}, {}, {}, {}, 1, {})", call("trap_mandelbulb_int"), p, int(q[0]), int(q[1]), r(2),
+                           lit.vec3({q[3], q[4], q[5]}));
       return fmt::format("{}({}, {}, {}, {}, 1, {})", call("trap_mandelbulb"), p, r(0), int(q[1]), r(2),
                          lit.vec3({q[3], q[4], q[5]}));
     case Kind::Mandelbox:

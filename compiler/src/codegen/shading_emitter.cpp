@@ -29,11 +29,18 @@ void emit_trap_palette(CodeWriter& w, const Literals& lit, const ir::MaterialDef
 }
 
 // The shadow factor towards a light (empty when the light casts none).
-std::string shadow_call(const ir::Light& l, const std::string& to_light, const std::string& tmax, const Literals& lit,
-                        std::set<std::string>& used) {
+// With the scene's bounds, the march stops where the shadow ray leaves them:
+// nothing beyond can block the light.
+std::string shadow_call(const ir::Light& l, const std::string& to_light, std::string tmax, const Literals& lit,
+                        const ir::Box3* bounds, std::set<std::string>& used) {
   if (l.shadows == ir::Light::Shadows::None) return "";
+  if (bounds) {
+    used.insert("ray_box_exit");
+    tmax = fmt::format("ray_box_exit(shadow_origin, {}, {}, {}, {})", to_light, lit.vec3(bounds->lo), lit.vec3(bounds->hi), tmax);
+  }
   std::string common = "shadow_origin, " + to_light + ", 2.0f * footprint, " + tmax;
-  std::string tail = fmt::format("footprint, 0.5f * footprint, {}, v3_dot(n, {}) > 0.0f", l.shadow_steps, to_light);
+  // only lanes that hit and face the light march
+  std::string tail = fmt::format("footprint, 0.5f * footprint, {}, hit & (v3_dot(n, {}) > 0.0f)", l.shadow_steps, to_light);
   if (l.shadows == ir::Light::Shadows::Hard) {
     used.insert("shadow_hard");
     return fmt::format("shadow_hard({}, {})", common, tail);
@@ -44,7 +51,7 @@ std::string shadow_call(const ir::Light& l, const std::string& to_light, const s
 
 }  // namespace
 
-std::string emit_shading(const ir::RenderPlan& plan, const Literals& lit, std::set<std::string>& used) {
+std::string emit_shading(const ir::RenderPlan& plan, const Literals& lit, const ir::Box3* bounds, std::set<std::string>& used) {
   CodeWriter w;
   const auto& mats = plan.materials;
   bool traps = false;  // any orbit-trap material: the trap value comes along
@@ -88,7 +95,7 @@ std::string emit_shading(const ir::RenderPlan& plan, const Literals& lit, std::s
   for (const auto& l : plan.lights) any_shadows |= l.shadows != ir::Light::Shadows::None;
   w.line("// ---- lighting: v points from the surface to the eye ----");
   w.line(fmt::format("vec3 shade_surface(vec3 p, vec3 n, vec3 v, real mat{}{}{})", trap_param, ao ? ", real occlusion" : "",
-                     any_shadows ? ", real footprint" : ""));
+                     any_shadows ? ", real footprint, mask hit" : ""));
   w.open("{");
   w.line("vec3 albedo;");
   w.line("real specular, shininess;");
@@ -113,7 +120,7 @@ std::string emit_shading(const ir::RenderPlan& plan, const Literals& lit, std::s
       w.line(fmt::format("// light {}: directional ({})", i, where(l.loc)));
       std::string to_light = lit.vec3({-l.direction[0], -l.direction[1], -l.direction[2]});
       std::string term = fmt::format("shade_blinn_phong(n, {}, v, albedo, specular, shininess, {})", to_light, lit.vec3(radiance));
-      std::string sh = shadow_call(l, to_light, lit.real(plan.march.max_distance), lit, used);
+      std::string sh = shadow_call(l, to_light, lit.real(plan.march.max_distance), lit, bounds, used);
       if (!sh.empty()) term = fmt::format("v3_scale({}, {})", term, sh);
       w.line(fmt::format("c = v3_add(c, {});", term));
     } else if (l.kind == ir::LightKind::Point) {
@@ -123,7 +130,7 @@ std::string emit_shading(const ir::RenderPlan& plan, const Literals& lit, std::s
       w.line(fmt::format("vec3 l = v3_sub({}, p);", lit.vec3(l.position)));
       w.line("real dist2 = fmax(v3_dot(l, l), K(1e-8f));");
       w.line("l = v3_scale(l, rsqrt(dist2));");
-      std::string sh = shadow_call(l, "l", "sqrt(dist2)", lit, used);
+      std::string sh = shadow_call(l, "l", "sqrt(dist2)", lit, bounds, used);
       w.line(fmt::format("c = v3_add(c, v3_scale(shade_blinn_phong(n, l, v, albedo, specular, shininess, {}), {}1.0f / dist2));",
                          lit.vec3(radiance), sh.empty() ? "" : sh + " * "));
       w.close("}");

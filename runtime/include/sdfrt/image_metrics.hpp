@@ -25,12 +25,20 @@ struct ComparisonMetrics {
   double hit_mask_disagreement_pct = 0;  // pixels where one hits and the other misses
   double depth_rel_error_median = 0, depth_rel_error_p99 = 0;  // |d - d_ref| / d_ref, both hit
   double normal_error_deg_median = 0, normal_error_deg_p99 = 0;  // angle, both hit
+  // Pixels where some display-encoded channel differs by more than
+  // pixel_threshold (in [0, 1]; the default 4/255 is 4 levels of an 8-bit PNG,
+  // above the rounding noise of float against double arithmetic).
+  double pixel_threshold = 0;
+  double pixels_differing_pct = 0;
   double psnr_db = 0;  // of the display-encoded RGB; +inf for identical images
   double ssim = 0;     // mean SSIM of the luma, 7x7 windows
 };
 
+constexpr double kDefaultPixelThreshold = 4.0 / 255.0;
+
 // Throws std::invalid_argument when the sizes differ.
-ComparisonMetrics compare_renders(const RenderOutputs& reference, const RenderOutputs& test);
+ComparisonMetrics compare_renders(const RenderOutputs& reference, const RenderOutputs& test,
+                                  double pixel_threshold = kDefaultPixelThreshold);
 std::string format_table(const ComparisonMetrics& m);
 std::string format_json(const ComparisonMetrics& m);
 

@@ -77,7 +77,7 @@ RenderOutputs load_render_outputs(const std::string& png_path) {
   return o;
 }
 
-ComparisonMetrics compare_renders(const RenderOutputs& ref, const RenderOutputs& test) {
+ComparisonMetrics compare_renders(const RenderOutputs& ref, const RenderOutputs& test, double pixel_threshold) {
   const FloatImage &a = ref.beauty, &b = test.beauty;
   if (a.width != b.width || a.height != b.height)
     throw std::invalid_argument(fmt::format("the renders differ in size: {}x{} and {}x{}", a.width, a.height, b.width,
@@ -93,6 +93,14 @@ ComparisonMetrics compare_renders(const RenderOutputs& ref, const RenderOutputs&
       se += d * d;
     }
   double mse = se / double(3 * n);
+  size_t differing = 0;
+  for (size_t i = 0; i < n; ++i) {
+    bool differs = false;
+    for (int c = 0; c < 3; ++c) differs |= std::fabs(double(a.plane(c)[i]) - double(b.plane(c)[i])) > pixel_threshold;
+    differing += differs;
+  }
+  m.pixel_threshold = pixel_threshold;
+  m.pixels_differing_pct = n ? 100.0 * double(differing) / double(n) : 0.0;
   m.psnr_db = mse > 0 ? 10 * std::log10(1.0 / mse) : std::numeric_limits<double>::infinity();
   m.ssim = ssim(a, b);
 
@@ -136,6 +144,8 @@ std::string format_table(const ComparisonMetrics& m) {
   if (m.has_normal)
     s += fmt::format("{:<32} {:.3f} / {:.3f} deg\n", "normal error, median / p99", m.normal_error_deg_median,
                      m.normal_error_deg_p99);
+  s += fmt::format("{:<32} {:.4f} %\n", fmt::format("pixels differing > {:.1f}/255", m.pixel_threshold * 255),
+                   m.pixels_differing_pct);
   s += fmt::format("{:<32} {:.2f} dB\n", "PSNR", m.psnr_db);
   s += fmt::format("{:<32} {:.5f}\n", "SSIM", m.ssim);
   return s;
@@ -145,6 +155,8 @@ std::string format_json(const ComparisonMetrics& m) {
   auto num = [](double v) { return std::isfinite(v) ? fmt::format("{}", v) : std::string("null"); };
   std::string s = fmt::format("{{\"width\": {}, \"height\": {}, \"psnr_db\": {}, \"ssim\": {}", m.width, m.height,
                               num(m.psnr_db), num(m.ssim));
+  s += fmt::format(", \"pixel_threshold\": {}, \"pixels_differing_pct\": {}", num(m.pixel_threshold),
+                   num(m.pixels_differing_pct));
   if (m.has_depth)
     s += fmt::format(", \"hit_mask_disagreement_pct\": {}, \"depth_rel_error_median\": {}, \"depth_rel_error_p99\": {}",
                      num(m.hit_mask_disagreement_pct), num(m.depth_rel_error_median), num(m.depth_rel_error_p99));
