@@ -86,3 +86,31 @@ inline real ray_box_exit(vec3 ro, vec3 rd, vec3 lo, vec3 hi, real tmax)
     mask meets = ray_box(ro, rd, lo, hi, &t0, &t1);
     return SEL((real)(0.0f), fmin(t1, tmax), meets);
 }
+
+//! fn ray_sphere
+//! deps: vec3_ops
+//! class: helper
+// The interval [t0, t1] of a ray (unit direction) inside the ball of radius
+// r around c. Returns the lanes whose ray meets the ball in front of the origin.
+inline mask ray_sphere(vec3 ro, vec3 rd, vec3 c, real r, real* t0, real* t1)
+{
+    vec3 oc = v3_sub(ro, c);
+    real b = v3_dot(oc, rd);
+    real disc = b * b - (v3_dot(oc, oc) - r * r);
+    real s = sqrt(fmax(disc, K(0.0f)));
+    *t0 = fmax(-b - s, K(0.0f));
+    *t1 = -b + s;
+    return (disc >= 0.0f) & (*t1 > 0.0f);
+}
+
+//! fn ray_sphere_exit
+//! deps: vec3_ops, ray_sphere
+//! class: helper
+// Where a ray from inside (or near) the ball leaves it, capped at tmax; 0
+// when the ray misses the ball.
+inline real ray_sphere_exit(vec3 ro, vec3 rd, vec3 c, real r, real tmax)
+{
+    real t0, t1;
+    mask meets = ray_sphere(ro, rd, c, r, &t0, &t1);
+    return SEL((real)(0.0f), fmin(t1, tmax), meets);
+}

@@ -15,6 +15,7 @@
 #include "gradient_emitter.hpp"
 #include "scene_emitter.hpp"
 #include "sdfc/codegen/stdlib_manifest.hpp"
+#include "sdfc/ir/fractal_math.hpp"
 #include "sdfc/ir/printer.hpp"
 #include "shading_emitter.hpp"
 
@@ -39,15 +40,32 @@ std::optional<double> uniform_material(const ir::Module& m) {
   return g.node(id).params[0];
 }
 
-// The box rays march in: the scene's inferred bounds padded by 1% of their
-// size plus a little, since the hit test accepts points up to an epsilon
-// outside the surface. None for an unbounded scene.
-std::optional<ir::Box3> march_bounds(const ir::Module& m) {
-  const ir::Props& root = m.graph->node(m.root).props;
+// Where rays march: the scene's inferred bounds padded by 1% of their size
+// plus a little, since the hit test accepts points up to an epsilon outside
+// the surface; and for a lone Mandelbulb (through bounding boxes and its
+// material) the ball of its set radius, padded the same way, which cuts the
+// box's corners off primary and shadow rays. None for an unbounded scene.
+std::optional<detail::RayBounds> march_bounds(const ir::Module& m) {
+  const ir::Graph& g = *m.graph;
+  const ir::Props& root = g.node(m.root).props;
   if (!root.bounds.finite()) return std::nullopt;
   double ext = 0;
   for (int i = 0; i < 3; ++i) ext = std::max(ext, root.bounds.hi[i] - root.bounds.lo[i]);
-  return root.bounds.padded(0.01 * ext + 1e-3);
+  detail::RayBounds b;
+  b.box = root.bounds.padded(0.01 * ext + 1e-3);
+  ir::NodeId id = m.root;
+  while (g.node(id).kind == ir::Kind::Bounded || g.node(id).kind == ir::Kind::Material) id = g.node(id).children[0];
+  const ir::Node& n = g.node(id);
+  double radius = 0;
+  if (n.kind == ir::Kind::Mandelbulb) radius = ir::mandelbulb_set_radius(n.params[0]);
+  if (n.kind == ir::Kind::Juliabulb)
+    radius = ir::julia_set_radius(n.params[0], std::sqrt(n.params[3] * n.params[3] + n.params[4] * n.params[4] +
+                                                         n.params[5] * n.params[5]));
+  if (radius > 0) {
+    b.has_sphere = true;
+    b.radius = radius * 1.01 + 1e-3;
+  }
+  return b;
 }
 
 // One ray segment: bounds, march, shading at the hit, background on a miss,
@@ -65,11 +83,20 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
   w.line("                  real* t_out, mask* hit_out, vec3* n_out, real* mat_out, real* steps_out)");
   w.open("{");
   if (auto bounds = march_bounds(m)) {
-    const ir::Box3& b = *bounds;
+    const ir::Box3& b = bounds->box;
     used.insert("ray_box");
     w.line("// march only where the ray crosses the scene's bounds (inferred from the IR)");
     w.line("real t0, t1;");
     w.line(fmt::format("active = active & ray_box(ro, rd, {}, {}, &t0, &t1);", lit.vec3(b.lo), lit.vec3(b.hi)));
+    if (bounds->has_sphere) {
+      used.insert("ray_sphere");
+      w.line("// and inside the fractal's bounding ball");
+      w.line("real s0, s1;");
+      w.line(fmt::format("active = active & ray_sphere(ro, rd, {}, {}, &s0, &s1);", lit.vec3(bounds->center),
+                         lit.real(bounds->radius)));
+      w.line("t0 = fmax(t0, s0);");
+      w.line("t1 = fmin(t1, s1);");
+    }
     w.line(fmt::format("t1 = fmin(t1, {});", lit.real(s.max_distance)));
   } else {
     w.line("// the scene is unbounded (it holds a plane): march the whole range");
@@ -377,7 +404,7 @@ EmittedKernel emit_opencl(const ir::Module& m, const EmitOptions& opt) {
   std::set<std::string> used;
   std::string scene = detail::emit_scene_functions(m, lit, used);
   if (m.plan.march.normals == ir::NormalMethod::Dual) scene += "\n" + detail::emit_scene_gradient(m, lit, used);
-  std::optional<ir::Box3> bounds = march_bounds(m);
+  std::optional<detail::RayBounds> bounds = march_bounds(m);
   std::string shading = detail::emit_shading(m.plan, lit, bounds ? &*bounds : nullptr, used);
   std::string kernel = segment_function(m, lit, used) + "\n" + radiance_function(m, used) + "\n" +
                        render_kernel(m, lit, used, opt.aovs);

@@ -32,11 +32,17 @@ void emit_trap_palette(CodeWriter& w, const Literals& lit, const ir::MaterialDef
 // With the scene's bounds, the march stops where the shadow ray leaves them:
 // nothing beyond can block the light.
 std::string shadow_call(const ir::Light& l, const std::string& to_light, std::string tmax, const Literals& lit,
-                        const ir::Box3* bounds, std::set<std::string>& used) {
+                        const RayBounds* bounds, std::set<std::string>& used) {
   if (l.shadows == ir::Light::Shadows::None) return "";
   if (bounds) {
     used.insert("ray_box_exit");
-    tmax = fmt::format("ray_box_exit(shadow_origin, {}, {}, {}, {})", to_light, lit.vec3(bounds->lo), lit.vec3(bounds->hi), tmax);
+    tmax = fmt::format("ray_box_exit(shadow_origin, {}, {}, {}, {})", to_light, lit.vec3(bounds->box.lo),
+                       lit.vec3(bounds->box.hi), tmax);
+    if (bounds->has_sphere) {
+      used.insert("ray_sphere_exit");
+      tmax = fmt::format("ray_sphere_exit(shadow_origin, {}, {}, {}, {})", to_light, lit.vec3(bounds->center),
+                         lit.real(bounds->radius), tmax);
+    }
   }
   std::string common = "shadow_origin, " + to_light + ", 2.0f * footprint, " + tmax;
   // only lanes that hit and face the light march
@@ -51,7 +57,7 @@ std::string shadow_call(const ir::Light& l, const std::string& to_light, std::st
 
 }  // namespace
 
-std::string emit_shading(const ir::RenderPlan& plan, const Literals& lit, const ir::Box3* bounds, std::set<std::string>& used) {
+std::string emit_shading(const ir::RenderPlan& plan, const Literals& lit, const RayBounds* bounds, std::set<std::string>& used) {
   CodeWriter w;
   const auto& mats = plan.materials;
   bool traps = false;  // any orbit-trap material: the trap value comes along
