@@ -61,6 +61,29 @@ TEST(SystemFailures, UnknownDeviceNameExitsThreeListingTheDevices) {
   expect_no_exception_text(r);
 }
 
+// Ids that do not exist, in every form and from every place a device is named.
+TEST(SystemFailures, DeviceIdsThatDoNotExistExitThree) {
+  ScratchDir dir;
+  const std::string render = "render examples/primitives.yaml --width 32 --height 18 -q -o " + dir.file("p.png");
+  struct Case {
+    std::string args, env, id, source;
+  } cases[] = {{render + " --device 7:0", "", "'7:0'", "from the device argument"},
+               {render + " --device 0:9", "", "'0:9'", "from the device argument"},
+               {render + " --device 42", "", "'42'", "from the device argument"},
+               {render, "SDFC_DEVICE=5:5 ", "'5:5'", "from SDFC_DEVICE"},
+               {"view examples/primitives.yaml --benchmark 1 --device 3:1", "SDL_VIDEODRIVER=dummy ", "'3:1'",
+                "from the device argument"}};
+  for (const Case& c : cases) {
+    RunResult r = run_sdfc(c.args, c.env);
+    EXPECT_EQ(r.code, 3) << c.args << "\n" << r.err;
+    EXPECT_NE(r.err.find("unknown OpenCL device " + c.id + " (" + c.source), std::string::npos)
+        << c.env << c.args << "\n" << r.err;
+    EXPECT_NE(r.err.find("Available devices:\n  0:0"), std::string::npos) << r.err;
+    expect_no_exception_text(r);
+  }
+  EXPECT_TRUE(entries(dir.path()).empty());
+}
+
 TEST(SystemFailures, KernelBuildFailureShowsTheLogAndTheKernelLines) {
   ScratchDir dir;
   RunResult c = run_sdfc("compile examples/primitives.yaml -o " + dir.file("k.cl"));
