@@ -51,6 +51,7 @@ struct RenderArgs {
   int tile = 256;
   int repeat = 0;
   bool quiet = false;
+  bool keep_partial = false;
   int bit_depth = 8;
   std::vector<std::string> aovs;
   std::string frames;
@@ -144,6 +145,7 @@ int run_render(RenderArgs a) {
   out.bit_depth = a.bit_depth;
   out.aovs = a.aovs;
   out.quiet = a.quiet;
+  out.keep_partial = a.keep_partial;
   for (int fno : frames) {
     const double time = fno / a.fps;
     out.beauty = sequence && has_frame_field(a.output) ? frame_path(a.output, fno) : a.output;
@@ -183,6 +185,9 @@ Action add_render(CLI::App& app) {
   cmd->add_option("--repeat", a->repeat, "Render one warm-up and N timed frames; print each time and the median")
       ->check(CLI::Range(1, 1000));
   cmd->add_flag("-q,--quiet", a->quiet, "No progress or timing on stderr");
+  cmd->add_flag("--keep-partial", a->keep_partial,
+                "On Ctrl-C, write the tiles done so far to OUT.partial.png (the rest black; OUT.png is never "
+                "written then); with render.samples > 1 it is also refreshed after each pass");
   cmd->add_option("--bit-depth", a->bit_depth, "PNG bits per channel: 8 or 16")->check(CLI::IsMember({8, 16}));
   cmd->add_option("--aov", a->aovs, "Also write these as PFM beside the image (OUT.<aov>.pfm): depth, normal, steps, material")
       ->delimiter(',')

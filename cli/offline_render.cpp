@@ -53,10 +53,12 @@ struct AovWriters {
 struct FrameProgress {
   sdfrt::ProgressBar bar{"tiles"};
   int total = 0, done = 0;
+  int in_band = 0;  // tiles done in the band being rendered
   bool quiet;
   explicit FrameProgress(bool q) : quiet(q) {}
   std::function<void(int, int)> band_callback() {
     return [this](int d, int) {
+      in_band = d;
       if (!quiet) bar.update(done + d, total);
     };
   }
@@ -64,11 +66,69 @@ struct FrameProgress {
 
 int tiles_in(int width, int rows, int tile) { return ((width + tile - 1) / tile) * ((rows + tile - 1) / tile); }
 
+void say_not_written(const OfflineOutput& out) {
+  std::cerr << fmt::format("sdfc: stopped; {} was not written{}\n", out.beauty,
+                           out.keep_partial ? "" : fmt::format(" (--keep-partial keeps the tiles done in {})",
+                                                               partial_path(out.beauty)));
+}
+
+// Progressive rendering: the sum of the tone-mapped samples and how many
+// samples each row holds (a stopped pass leaves rows with one fewer).
+struct RunningMean {
+  int w, h;
+  float gamma;
+  std::vector<float> sum;
+  std::vector<int> row_samples;
+  RunningMean(int w_, int h_, float g)
+      : w(w_), h(h_), gamma(g), sum(std::size_t(w_) * std::size_t(h_) * 3, 0.0f), row_samples(std::size_t(h_), 0) {}
+
+  // The kernel returns display values, gamma(mean of tone-mapped samples);
+  // undoing the gamma gives the tone-mapped mean, which averages across passes.
+  void add(const sdfrt::FloatImage& band, int y0) {
+    const std::size_t pixels = std::size_t(w) * std::size_t(h), at = std::size_t(y0) * std::size_t(w);
+    for (int c = 0; c < 3; ++c) {
+      auto plane = band.plane(c);
+      float* s = sum.data() + c * pixels + at;
+      for (std::size_t i = 0; i < plane.size(); ++i) s[i] += std::pow(std::clamp(plane[i], 0.0f, 1.0f), gamma);
+    }
+    for (int y = y0; y < y0 + band.height; ++y) ++row_samples[std::size_t(y)];
+  }
+
+  // Streams the mean to a PNG writer, `tile` rows at a time (black where a
+  // row has no sample yet).
+  void write(sdfrt::BandWriter& out, int tile) const {
+    const std::size_t pixels = std::size_t(w) * std::size_t(h);
+    const float inv_gamma = 1.0f / gamma;
+    for (int y0 = 0; y0 < h; y0 += tile) {
+      const int rows = std::min(tile, h - y0);
+      sdfrt::FloatImage band(w, rows, {"r", "g", "b"});
+      for (int c = 0; c < 3; ++c) {
+        auto dst = band.plane(c);
+        const float* s = sum.data() + c * pixels + std::size_t(y0) * std::size_t(w);
+        for (int y = 0; y < rows; ++y) {
+          const int n = row_samples[std::size_t(y0 + y)];
+          const float scale = n > 0 ? 1.0f / float(n) : 0.0f;
+          for (int x = 0; x < w; ++x) {
+            const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x);
+            dst[i] = std::pow(s[i] * scale, inv_gamma);
+          }
+        }
+      }
+      out.write_band(band);
+    }
+  }
+};
+
 }  // namespace
 
 std::string aov_path(const std::string& beauty, const std::string& aov) {
   std::filesystem::path p(beauty);
   return (p.parent_path() / (p.stem().string() + "." + aov + ".pfm")).string();
+}
+
+std::string partial_path(const std::string& beauty) {
+  std::filesystem::path p(beauty);
+  return (p.parent_path() / (p.stem().string() + ".partial" + p.extension().string())).string();
 }
 
 std::vector<std::string> render_offline(sdfrt::Renderer& renderer, const OfflineFrame& f, const OfflineOutput& out,
@@ -82,6 +142,7 @@ std::vector<std::string> render_offline(sdfrt::Renderer& renderer, const Offline
                              w, h, f.samples);
   const int passes = progressive ? f.samples : 1;
   const int bands = (h + tile - 1) / tile;
+  const std::string partial = partial_path(out.beauty);
   FrameProgress progress(out.quiet);
   progress.total = tiles_in(w, h, tile) * passes;
 
@@ -89,77 +150,94 @@ std::vector<std::string> render_offline(sdfrt::Renderer& renderer, const Offline
   opt.tile_width = opt.tile_height = tile;
   opt.cancel = cancel;
   opt.progress = progress.band_callback();
+  // On cancel the renderer hands over the band with the tiles it finished.
+  sdfrt::FloatImage stopped_band;
+  if (out.keep_partial) opt.partial = &stopped_band;
 
   AovWriters aovs(spec, f, out);
   std::vector<std::string> written;
   std::vector<float> frame = f.frame;
+  auto done = [&] {
+    progress.bar.finish();
+    // A partial file from an earlier, interrupted run of the same output is stale now.
+    if (out.keep_partial) {
+      std::error_code ec;
+      std::filesystem::remove(partial, ec);
+    }
+    written.insert(written.end(), aovs.paths.begin(), aovs.paths.end());
+    return written;
+  };
   if (!progressive) {
     auto beauty = sdfrt::open_png_writer(out.beauty, w, h, {0, 1, 2}, out.bit_depth);
     for (int b = 0; b < bands; ++b) {
       opt.row_begin = b * tile;
       opt.row_count = std::min(tile, h - opt.row_begin);
-      sdfrt::FloatImage band = renderer.render(frame, w, h, opt);
+      sdfrt::FloatImage band;
+      try {
+        band = renderer.render(frame, w, h, opt);
+      } catch (const sdfrt::Cancelled&) {
+        progress.bar.finish();
+        say_not_written(out);
+        if (out.keep_partial) {
+          // The bands streamed so far, this band's finished tiles, black below.
+          beauty->write_band(stopped_band);
+          std::cerr << fmt::format("sdfc: partial image: {} ({} of {} tiles; the rest is black)\n",
+                                   beauty->finish_partial(partial).path, progress.done + progress.in_band,
+                                   progress.total);
+        }
+        throw;
+      }
       beauty->write_band(band);
       aovs.write(band);
       progress.done += tiles_in(w, opt.row_count, tile);
     }
-    progress.bar.finish();
     written.push_back(beauty->finish().path);
     aovs.finish();
-    written.insert(written.end(), aovs.paths.begin(), aovs.paths.end());
-    return written;
+    return done();
   }
 
-  // Progressive: pass k renders sample k of every pixel. The kernel returns
-  // display values, gamma(mean of tone-mapped samples); undoing the gamma
-  // gives the tone-mapped mean, which averages across passes.
-  std::vector<float> sum(pixels * 3, 0.0f);
-  const float gamma = static_cast<float>(f.gamma), inv_gamma = 1.0f / gamma;
+  // Progressive: pass k renders sample k of every pixel into a running mean.
+  RunningMean mean(w, h, static_cast<float>(f.gamma));
   for (int pass = 0; pass < passes; ++pass) {
     frame[26] = static_cast<float>(pass);
     frame[27] = 1.0f;
-    try {
-      for (int b = 0; b < bands; ++b) {
-        opt.row_begin = b * tile;
-        opt.row_count = std::min(tile, h - opt.row_begin);
-        sdfrt::FloatImage band = renderer.render(frame, w, h, opt);
-        const std::size_t at = static_cast<std::size_t>(opt.row_begin) * w;
-        for (int c = 0; c < 3; ++c) {
-          auto plane = band.plane(c);
-          float* s = sum.data() + c * pixels + at;
-          for (std::size_t i = 0; i < plane.size(); ++i) s[i] += std::pow(std::clamp(plane[i], 0.0f, 1.0f), gamma);
+    for (int b = 0; b < bands; ++b) {
+      opt.row_begin = b * tile;
+      opt.row_count = std::min(tile, h - opt.row_begin);
+      sdfrt::FloatImage band;
+      try {
+        band = renderer.render(frame, w, h, opt);
+      } catch (const sdfrt::Cancelled&) {
+        progress.bar.finish();
+        say_not_written(out);
+        if (out.keep_partial) {
+          // In the first pass the unfinished tiles stay black; later, the
+          // band keeps the mean of the passes before.
+          if (pass == 0) mean.add(stopped_band, opt.row_begin);
+          auto writer = sdfrt::open_png_writer(out.beauty, w, h, {0, 1, 2}, out.bit_depth);
+          mean.write(*writer, tile);
+          std::cerr << fmt::format("sdfc: partial image: {} (stopped in pass {} of {}: {} sample(s) per pixel{})\n",
+                                   writer->finish_partial(partial).path, pass + 1, passes, std::max(pass, 1),
+                                   pass == 0 ? ", the tiles not done are black" : ", one more above the stop");
         }
-        if (pass == 0) aovs.write(band);
-        progress.done += tiles_in(w, opt.row_count, tile);
+        throw;
       }
-    } catch (const sdfrt::Cancelled&) {
-      progress.bar.finish();
-      if (pass > 0)
-        std::cerr << fmt::format("sdfc: stopped in pass {} of {}; {} holds {} sample(s) per pixel\n", pass + 1, passes,
-                                 out.beauty, pass);
-      throw;
+      mean.add(band, opt.row_begin);
+      if (pass == 0) aovs.write(band);
+      progress.done += tiles_in(w, opt.row_count, tile);
     }
     if (pass == 0) aovs.finish();
-    // Rewrite the beauty image from the mean so far, one band at a time.
-    auto beauty = sdfrt::open_png_writer(out.beauty, w, h, {0, 1, 2}, out.bit_depth);
-    const float scale = 1.0f / static_cast<float>(pass + 1);
-    for (int b = 0; b < bands; ++b) {
-      const int y0 = b * tile, rows = std::min(tile, h - y0);
-      sdfrt::FloatImage band(w, rows, {"r", "g", "b"});
-      const std::size_t at = static_cast<std::size_t>(y0) * w;
-      for (int c = 0; c < 3; ++c) {
-        auto dst = band.plane(c);
-        const float* s = sum.data() + c * pixels + at;
-        for (std::size_t i = 0; i < dst.size(); ++i) dst[i] = std::pow(s[i] * scale, inv_gamma);
-      }
-      beauty->write_band(band);
+    if (out.keep_partial && pass + 1 < passes) {
+      // Refreshed after every pass, to watch the image refine.
+      auto writer = sdfrt::open_png_writer(out.beauty, w, h, {0, 1, 2}, out.bit_depth);
+      mean.write(*writer, tile);
+      writer->finish_partial(partial);
     }
-    beauty->finish();
   }
-  progress.bar.finish();
-  written.push_back(out.beauty);
-  written.insert(written.end(), aovs.paths.begin(), aovs.paths.end());
-  return written;
+  auto beauty = sdfrt::open_png_writer(out.beauty, w, h, {0, 1, 2}, out.bit_depth);
+  mean.write(*beauty, tile);
+  written.push_back(beauty->finish().path);
+  return done();
 }
 
 std::vector<int> parse_frames(const std::string& spec) {

@@ -2,8 +2,9 @@
 // Offline rendering of one frame to files: the image is rendered band by
 // band (one row of tiles at a time) and streamed to the writers, so memory
 // stays bounded at any size up to 16384x16384. With render.samples > 1 the
-// samples are rendered pass by pass and the beauty image is rewritten after
-// each pass, so a stopped render leaves the best image so far.
+// samples are rendered pass by pass into a running mean. The final name is
+// written once, complete; a cancelled render leaves it untouched and, only
+// when asked (keep_partial), writes what was done to <stem>.partial.png.
 #include <sdfrt/renderer.hpp>
 
 #include <atomic>
@@ -17,6 +18,9 @@ struct OfflineOutput {
   int bit_depth = 8;               // 8 or 16
   std::vector<std::string> aovs;   // of kAovNames
   bool quiet = false;
+  // On cancel, write the tiles done so far to partial_path(beauty) (the
+  // rest black); with several samples it is also refreshed after each pass.
+  bool keep_partial = false;
 };
 
 // The AOVs --aov accepts, and the kernel planes each one reads.
@@ -24,6 +28,8 @@ inline const std::vector<std::string> kAovNames = {"depth", "normal", "steps", "
 
 // "<dir>/<stem>.<aov>.pfm" beside the beauty image.
 std::string aov_path(const std::string& beauty, const std::string& aov);
+// "<dir>/<stem>.partial<ext>": out.png -> out.partial.png.
+std::string partial_path(const std::string& beauty);
 
 struct OfflineFrame {
   std::vector<float> frame;  // the frame block (frame_params)
@@ -33,7 +39,8 @@ struct OfflineFrame {
 };
 
 // Renders and writes; returns the paths written. Throws sdfrt::Cancelled
-// (after reporting how many passes the beauty image holds) when cancelled.
+// when cancelled, after removing its temporary files (and writing the
+// partial image if asked).
 std::vector<std::string> render_offline(sdfrt::Renderer& renderer, const OfflineFrame& f, const OfflineOutput& out,
                                         int tile, std::atomic<bool>* cancel);
 

@@ -7,9 +7,13 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <thread>
+
+#include <sdfrt/image_read.hpp>
 
 #include "run_sdfc.hpp"
 
@@ -55,6 +59,29 @@ TEST(SystemFailures, UnknownDeviceNameExitsThreeListingTheDevices) {
   EXPECT_NE(r.err.find("no-such-gpu"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("0:0"), std::string::npos) << "should list the ids that exist: " << r.err;
   expect_no_exception_text(r);
+}
+
+// Ids that do not exist, in every form and from every place a device is named.
+TEST(SystemFailures, DeviceIdsThatDoNotExistExitThree) {
+  ScratchDir dir;
+  const std::string render = "render examples/primitives.yaml --width 32 --height 18 -q -o " + dir.file("p.png");
+  struct Case {
+    std::string args, env, id, source;
+  } cases[] = {{render + " --device 7:0", "", "'7:0'", "from the device argument"},
+               {render + " --device 0:9", "", "'0:9'", "from the device argument"},
+               {render + " --device 42", "", "'42'", "from the device argument"},
+               {render, "SDFC_DEVICE=5:5 ", "'5:5'", "from SDFC_DEVICE"},
+               {"view examples/primitives.yaml --benchmark 1 --device 3:1", "SDL_VIDEODRIVER=dummy ", "'3:1'",
+                "from the device argument"}};
+  for (const Case& c : cases) {
+    RunResult r = run_sdfc(c.args, c.env);
+    EXPECT_EQ(r.code, 3) << c.args << "\n" << r.err;
+    EXPECT_NE(r.err.find("unknown OpenCL device " + c.id + " (" + c.source), std::string::npos)
+        << c.env << c.args << "\n" << r.err;
+    EXPECT_NE(r.err.find("Available devices:\n  0:0"), std::string::npos) << r.err;
+    expect_no_exception_text(r);
+  }
+  EXPECT_TRUE(entries(dir.path()).empty());
 }
 
 TEST(SystemFailures, KernelBuildFailureShowsTheLogAndTheKernelLines) {
@@ -144,14 +171,24 @@ struct Interrupted {
   std::string err;
 };
 
-// Starts a long render, waits until its progress shows tiles done, sends
+// The tiles done in the last progress line ("717/1024 tiles ..."), or -1.
+int tiles_done(const std::string& err) {
+  size_t at = err.rfind(" tiles ");
+  if (at == std::string::npos) return -1;
+  size_t slash = err.rfind('/', at), start = err.find_last_not_of("0123456789", slash - 1);
+  return std::atoi(err.substr(start + 1, slash - start - 1).c_str());
+}
+
+// Starts a long render of the Mandelbulb (SIDE x SIDE in 32-pixel tiles),
+// waits until its progress shows more than `min_tiles` tiles done, sends
 // SIGINT (what Ctrl-C does) and returns how it ended.
-Interrupted render_and_interrupt(const ScratchDir& dir, const std::string& extra) {
+Interrupted render_and_interrupt(const ScratchDir& dir, const std::vector<std::string>& extra, int side = 2048,
+                                 int min_tiles = 0) {
   std::string err_path = dir.file("stderr");
   std::string out_png = dir.file("big.png");
-  std::vector<std::string> args = {SDFC_BINARY, "render", "examples/mandelbulb.yaml", "--width", "1024", "--height",
-                                   "1024", "--tile", "16", "-o", out_png};
-  if (!extra.empty()) args.push_back(extra);
+  std::vector<std::string> args = {SDFC_BINARY, "render", "examples/mandelbulb.yaml", "--width", std::to_string(side),
+                                   "--height", std::to_string(side), "--tile", "32", "-o", out_png};
+  args.insert(args.end(), extra.begin(), extra.end());
   pid_t pid = fork();
   if (pid == 0) {
     if (chdir(SDFC_SOURCE_DIR) != 0) _exit(120);
@@ -164,9 +201,9 @@ Interrupted render_and_interrupt(const ScratchDir& dir, const std::string& extra
     _exit(121);
   }
   // Readiness wait, not a timing assertion: the progress lines appear once
-  // the kernel is built and a tenth of the tiles are done.
+  // the kernel is built and tiles are done.
   auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(3);
-  while (read_text(err_path).find(" tiles ") == std::string::npos && std::chrono::steady_clock::now() < deadline) {
+  while (tiles_done(read_text(err_path)) <= min_tiles && std::chrono::steady_clock::now() < deadline) {
     int st = 0;
     if (waitpid(pid, &st, WNOHANG) == pid) return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, read_text(err_path)};
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
@@ -177,12 +214,70 @@ Interrupted render_and_interrupt(const ScratchDir& dir, const std::string& extra
   return {WIFEXITED(st) ? WEXITSTATUS(st) : 128 + WTERMSIG(st), read_text(err_path)};
 }
 
-TEST(SystemFailures, CtrlCLeavesNothingAtTheFinalName) {
+// Rows of an image that are all black, and rows with some light.
+std::pair<int, int> black_and_lit_rows(const sdfrt::FloatImage& img) {
+  int black = 0, lit = 0;
+  for (int y = 0; y < img.height; ++y) {
+    bool any = false;
+    for (int c = 0; c < 3 && !any; ++c) {
+      auto p = img.plane(c);
+      for (int x = 0; x < img.width && !any; ++x) any = p[std::size_t(y) * img.width + x] > 0.0f;
+    }
+    (any ? lit : black) += 1;
+  }
+  return {black, lit};
+}
+
+TEST(SystemFailures, CtrlCLeavesTheFinalNameUntouched) {
   ScratchDir dir;
-  Interrupted r = render_and_interrupt(dir, "");
+  dir.write("big.png", "the previous image");
+  Interrupted r = render_and_interrupt(dir, {});
   EXPECT_EQ(r.code, 130) << r.err;
   EXPECT_NE(r.err.find("sdfc: cancelled"), std::string::npos) << r.err;
-  EXPECT_EQ(entries(dir.path()), std::vector<std::string>{"stderr"});
+  EXPECT_NE(r.err.find("big.png was not written"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--keep-partial"), std::string::npos) << "says how to keep the tiles: " << r.err;
+  EXPECT_EQ(entries(dir.path()), (std::vector<std::string>{"big.png", "stderr"})) << "no temp or partial file";
+  EXPECT_EQ(read_text(dir.file("big.png")), "the previous image");
+}
+
+TEST(SystemFailures, CtrlCWithKeepPartialWritesTheTilesDoneToAPartialFile) {
+  ScratchDir dir;
+  Interrupted r = render_and_interrupt(dir, {"--keep-partial"});
+  EXPECT_EQ(r.code, 130) << r.err;
+  EXPECT_NE(r.err.find("partial image: " + dir.file("big.partial.png")), std::string::npos) << r.err;
+  EXPECT_EQ(entries(dir.path()), (std::vector<std::string>{"big.partial.png", "stderr"})) << "never big.png";
+  // A whole image of the full size: rendered rows at the top, black below.
+  sdfrt::FloatImage img = sdfrt::read_png(dir.file("big.partial.png"));
+  EXPECT_EQ(img.width, 2048);
+  EXPECT_EQ(img.height, 2048);
+  auto [black, lit] = black_and_lit_rows(img);
+  EXPECT_GT(lit, 0) << "holds the tiles done";
+  EXPECT_GT(black, 0) << "the tiles not done are black";
+}
+
+// 512x512 in 32-pixel tiles is 256 tiles a pass: stopped after 300 tiles,
+// the first pass is complete and the partial image has no black row.
+TEST(SystemFailures, CtrlCWithKeepPartialDuringSamplePassesKeepsTheMeanSoFar) {
+  ScratchDir dir;
+  Interrupted r = render_and_interrupt(dir, {"--keep-partial", "--set", "render.samples=64"}, 512, 300);
+  EXPECT_EQ(r.code, 130) << r.err;
+  EXPECT_NE(r.err.find("partial image: " + dir.file("big.partial.png")), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("stopped in pass"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("stopped in pass 1 "), std::string::npos) << r.err;
+  EXPECT_EQ(entries(dir.path()), (std::vector<std::string>{"big.partial.png", "stderr"})) << "never big.png";
+  sdfrt::FloatImage img = sdfrt::read_png(dir.file("big.partial.png"));
+  EXPECT_EQ(img.width, 512);
+  EXPECT_EQ(img.height, 512);
+  EXPECT_EQ(black_and_lit_rows(img).first, 0);
+}
+
+TEST(SystemFailures, AFinishedRenderWithKeepPartialLeavesNoPartialFile) {
+  ScratchDir dir;
+  dir.write("p.partial.png", "left by an earlier interrupted run");
+  RunResult r = run_sdfc("render examples/primitives.yaml --width 64 --height 40 -q --keep-partial -o " +
+                         dir.file("p.png"));
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(entries(dir.path()), std::vector<std::string>{"p.png"});
 }
 
 }  // namespace

@@ -20,7 +20,15 @@ std::string range_text(const Range& r) {
 
 double ValueReader::number(const SourceValue& v, std::string_view what, Range r) {
   if (!v.is_scalar() || v.quoted) {
-    std::string hint = v.quoted ? "remove the quotes" : "";
+    std::string hint;
+    if (v.quoted) {
+      // A quoted number is a slip; a formula is a feature this value lacks.
+      char* end = nullptr;
+      std::strtod(v.scalar.c_str(), &end);
+      const bool number = !v.scalar.empty() && end == v.scalar.c_str() + v.scalar.size();
+      hint = number ? "remove the quotes"
+                    : "this value takes a plain number; expressions (of x, y, z) are only read in displace.expr";
+    }
     sink_.error(v.loc, fmt::format("{}: expected a number, got {}", what, v.kind_name()), hint);
     return r.lo_open ? r.lo + 1 : std::max(r.lo, std::min(r.hi, 1.0));
   }

@@ -4,6 +4,7 @@
 #include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -68,6 +69,35 @@ SourceValue convert(const YAML::Node& n, const std::shared_ptr<const std::string
   return v;
 }
 
+// yaml-cpp marks its depth error at the end of the file. In flow style
+// ("{union: [{union: [...") point at the bracket that passes our limit
+// instead; returns false when the nesting is not in brackets.
+bool deepest_flow_bracket(const std::string& text, int limit, int& line, int& col) {
+  int depth = 0;
+  char quote = 0;
+  line = 1, col = 0;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '\n') {
+      ++line, col = 0;
+      continue;
+    }
+    ++col;
+    if (quote) {
+      if (c == quote) quote = 0;
+    } else if (c == '"' || c == '\'') {
+      quote = c;
+    } else if (c == '#' && (i == 0 || text[i - 1] == ' ' || text[i - 1] == '\t')) {
+      i = std::min(text.find('\n', i), text.size()) - 1;  // a comment: skip to the line end
+    } else if (c == '[' || c == '{') {
+      if (++depth > limit) return true;
+    } else if ((c == ']' || c == '}') && depth > 0) {
+      --depth;
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 
@@ -97,7 +127,9 @@ SourceValue load_yaml_text(const std::string& text, const std::string& name) {
     root = YAML::Load(text);
   } catch (const YAML::DeepRecursion& e) {
     // yaml-cpp's own guard (deeper than ours, so the same message fits).
-    fail(loc_of(e.mark, file), fmt::format("the scene nests deeper than {} levels", kMaxDepth), kFlattenHint);
+    SourceLoc at = loc_of(e.mark, file);
+    if (int line = 0, col = 0; deepest_flow_bracket(text, kMaxDepth, line, col)) at = SourceLoc(file, line, col);
+    fail(at, fmt::format("the scene nests deeper than {} levels", kMaxDepth), kFlattenHint);
   } catch (const YAML::Exception& e) {
     fail(loc_of(e.mark, file), "YAML syntax error: " + e.msg);
   }

@@ -19,6 +19,10 @@ class BandWriter {
   virtual void write_band(const FloatImage& band) = 0;
   // Throws IoError unless every row was written.
   virtual WriteReport finish() = 0;
+  // An interrupted render: the rows not written yet become black and the
+  // file is committed under `path` (same directory) instead of its own
+  // name. PNG only; other writers throw std::logic_error.
+  virtual WriteReport finish_partial(const std::string& path);
 };
 
 // RGB PNG, 8 or 16 bits per channel (libpng), from three planes of

@@ -106,6 +106,11 @@ void AtomicFile::write_at(std::size_t offset, const void* data, std::size_t size
   if (::lseek(fd_, static_cast<off_t>(written_), SEEK_SET) < 0) fail("seek", errno);
 }
 
+void AtomicFile::commit_as(std::string path) {
+  path_ = std::move(path);
+  commit();
+}
+
 void AtomicFile::commit() {
   if (fd_ < 0) throw IoError(fmt::format("cannot write '{}': file already closed", path_), path_, 0);
   flush_buffer();

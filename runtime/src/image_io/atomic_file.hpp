@@ -21,6 +21,9 @@ class AtomicFile {
   // after the furthest byte written.
   void write_at(std::size_t offset, const void* data, std::size_t size);
   void commit();
+  // Commits under `path` instead (the same directory as the original
+  // name, so the rename stays atomic): an interrupted render's partial file.
+  void commit_as(std::string path);
   std::size_t bytes_written() const noexcept { return written_; }
 
  private:

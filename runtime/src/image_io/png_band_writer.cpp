@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <csetjmp>
 #include <sdfrt/errors.hpp>
 #include <sdfrt/stream_writers.hpp>
@@ -70,6 +71,17 @@ class PngBandWriter final : public BandWriter {
     return report_;
   }
 
+  WriteReport finish_partial(const std::string& path) override {
+    std::fill(row_.begin(), row_.end(), png_byte{0});
+    for (; rows_ < height_; ++rows_) guarded([&] { png_write_row(png_, row_.data()); });
+    guarded([&] { png_write_end(png_, info_); });
+    file_.commit_as(path);
+    path_ = path;
+    report_.path = path_;
+    report_.bytes = file_.bytes_written();
+    return report_;
+  }
+
  private:
   // libpng reports errors by longjmp; turn them into IoError here, outside
   // the frames libpng owns.
@@ -111,6 +123,10 @@ class PngBandWriter final : public BandWriter {
 };
 
 }  // namespace
+
+WriteReport BandWriter::finish_partial(const std::string&) {
+  throw std::logic_error("only PNG images can be kept as partial files");
+}
 
 std::unique_ptr<BandWriter> open_png_writer(const std::string& path, int width, int height,
                                             std::vector<int> rgb_planes, int bit_depth) {
