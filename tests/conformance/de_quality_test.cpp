@@ -133,14 +133,15 @@ TEST_P(DeQuality, MissRateAndSlope) {
   ::testing::Test::RecordProperty("max_slope", fmt::format("{:.3g}", q.max_slope));
   ASSERT_GT(q.hits, c.rays / 10) << "too few rays met the set to measure anything";
   // The target: the default method misses < 0.1 % of rays. Met by
-  // the fold fractals, the Mandelbox and the quaternion Julia (0 misses);
-  // the Mandelbulb/Juliabulb analytic estimator measures 0.5 % here (the
-  // known slight overshoot of 0.5 log(r) r / dr), asserted at < 1 % so a
-  // regression shows; the hybrid's mixed scalar derivative is not a bound
-  // (sdfc check says "unknown") and is only recorded.
+  // the fold fractals, the Mandelbox, the quaternion Julia and the hybrid
+  // (0 misses). The Mandelbulb/Juliabulb analytic estimator passes 0.25-0.5 %
+  // of these rays (whose hit epsilon is ~100x finer than a pixel of the
+  // example views, where it is 0.02 %: ExampleMissRate): every one is a thin
+  // interior sliver that no step factor down to 0.7 catches either, so it is
+  // asserted at < 1 % here, so a regression shows.
   static const std::map<std::string, double> limit = {
-      {"mandelbox_analytic", 0.001}, {"julia", 0.001},          {"menger", 0.001},    {"sierpinski", 0.001},
-      {"kifs", 0.001},               {"mandelbulb_analytic", 0.01}, {"juliabulb", 0.01}};
+      {"mandelbox_analytic", 0.001}, {"julia", 0.001},  {"menger", 0.001},          {"sierpinski", 0.001},
+      {"kifs", 0.001},               {"hybrid", 0.001}, {"mandelbulb_analytic", 0.01}, {"juliabulb", 0.01}};
   if (auto it = limit.find(c.name); it != limit.end()) {
     EXPECT_LT(q.miss_rate(), it->second) << "the default estimator must be a bound in practice";
   }

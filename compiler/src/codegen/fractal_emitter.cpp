@@ -21,17 +21,14 @@ std::string hybrid(const ir::Node& n, const std::string& p, const Literals& lit,
   int iterations = int(q[0]), steps = int(q[2]);
   std::string d = fmt::format("hyb{}", w.fresh());
   int period = 0;
-  bool any_bulb = false;
-  for (int s = 0; s < steps; ++s) {
-    period += int(q[3 + s * ir::kHybridStepParams + 1]);
-    any_bulb = any_bulb || q[3 + s * ir::kHybridStepParams] == double(ir::HybridStep::Mandelbulb);
-  }
+  for (int s = 0; s < steps; ++s) period += int(q[3 + s * ir::kHybridStepParams + 1]);
+  const std::string escape = lit.real(ir::hybrid_escape_radius(q[1]));
   w.line(fmt::format("real {};  // hybrid orbit: {} iterations, the step pattern repeats every {}", d, iterations, period));
   w.open("{");
   w.line(fmt::format("vec3 z = {};", p));
   w.line("real dr = 1.0f;");
   w.line("real r = v3_length(z);");
-  w.line(fmt::format("mask alive = r < {};", lit.real(q[1])));
+  w.line(fmt::format("mask alive = r < {};  // the escape radius, not the bailout: see ir::hybrid_escape_radius", escape));
   w.open(fmt::format("for (int i = 0; i < {} && M_ANY(alive); ++i) {{", iterations));
   w.line(fmt::format("const int k = i % {};  // the same step for every lane", period));
   w.line("real dr_next = dr;");
@@ -54,14 +51,11 @@ std::string hybrid(const ir::Node& n, const std::string& p, const Literals& lit,
   w.line("z = v3_select(z, z_next, alive);");
   w.line("dr = SEL(dr, dr_next, alive);");
   w.line("r = v3_length(z);");
-  w.line(fmt::format("alive = alive & (r < {});", lit.real(q[1])));
+  w.line(fmt::format("alive = alive & (r < {});", escape));
   w.close("}");
-  if (any_bulb)
-    w.line(fmt::format("{} = 0.5f * log(fmax(r, K(1e-20f))) * r / dr;  // with a Mandelbulb step: the log estimator", d));
-  else
-    w.line(fmt::format("{} = r / fabs(dr);  // folds only: the linear estimator", d));
+  w.line(fmt::format("{} = r / fabs(dr);  // the linear estimator: below the log one at the escape radius", d));
   w.line("// far field: the set lies inside the bailout ball, so beyond twice its radius the distance to");
-  w.line("// the ball is a true bound (the log estimator overshoots there) and still far from zero");
+  w.line("// the ball is a true bound and a longer step");
   w.line(fmt::format("real r0 = v3_length({});", p));
   w.line(fmt::format("{0} = SEL({0}, r0 - {1}, r0 > {2});", d, lit.real(q[1]), lit.real(2 * q[1])));
   w.close("}");

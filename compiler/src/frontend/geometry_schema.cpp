@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "fractal_schema.hpp"
+#include "sdfc/ir/de_info.hpp"
 
 #include <cmath>
 #include <algorithm>
@@ -199,6 +200,7 @@ NodeId GeometryLowering::apply_modifiers(const SourceValue& node, NodeId n) {
   // Modifiers apply scale, then rotate, then translate, whatever their order
   // in the file: p_world = T(R(S(p_local))). Domain operations come first,
   // in the order of domain_modifiers().
+  const NodeId base = n;
   n = apply_domain_modifiers(r_, b_, node, n);
   if (const SourceValue* s = node.find("scale"); s && s->is_seq()) {
     // Non-uniform: the distance is corrected by the smallest factor (a bound).
@@ -230,6 +232,12 @@ NodeId GeometryLowering::apply_modifiers(const SourceValue& node, NodeId n) {
     // The fudge factor, local to this node: its distance times f.
     double factor = r_.number(*f, "step_factor", {0, 2, true});
     n = b_.make(Kind::StepFactor, {factor}, {n}, f->loc);
+  } else if (base != ir::kNoNode) {
+    // A fractal whose estimator measurably overshoots gets its measured
+    // default (ir::default_step_factor), at the node's own line.
+    const ir::Node& bn = b_.graph().node(base);
+    double factor = ir::default_step_factor(bn);
+    if (factor != 1.0) n = b_.make(Kind::StepFactor, {factor}, {n}, bn.loc);
   }
   if (const SourceValue* mat = node.find("material")) {
     if (!mat->is_scalar()) {

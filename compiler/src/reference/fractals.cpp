@@ -278,14 +278,12 @@ double hybrid(const Vec3& p, const std::vector<double>& q) {
   double bailout = q[1];
   // The orbit's step sequence: each step `repeat` times, then around again.
   std::vector<int> pattern;
-  bool any_bulb = false;
-  for (int s = 0; s < steps; ++s) {
+  for (int s = 0; s < steps; ++s)
     for (int k = 0; k < int(q[3 + s * ir::kHybridStepParams + 1]); ++k) pattern.push_back(s);
-    any_bulb = any_bulb || q[3 + s * ir::kHybridStepParams] == double(ir::HybridStep::Mandelbulb);
-  }
   Vec3 z = p;
   double dr = 1, r = len(z);
-  for (int i = 0; i < iterations && r < bailout; ++i) {
+  const double escape = ir::hybrid_escape_radius(bailout);
+  for (int i = 0; i < iterations && r < escape; ++i) {
     const double* st = &q[3 + pattern[i % pattern.size()] * ir::kHybridStepParams];
     if (st[0] == double(ir::HybridStep::Mandelbulb)) {
       double rp;
@@ -301,7 +299,7 @@ double hybrid(const Vec3& p, const std::vector<double>& q) {
   }
   double r0 = len(p);
   if (r0 > 2 * bailout) return r0 - bailout;  // the set lies inside the bailout ball
-  return any_bulb ? 0.5 * std::log(std::max(r, 1e-20)) * r / dr : r / std::fabs(dr);
+  return r / std::fabs(dr);
 }
 
 }  // namespace sdfc::reference::fractals

@@ -56,6 +56,14 @@ inline std::array<double, 9> axis_rotation(const std::array<double, 3>& a, doubl
 enum class KifsSymmetry { Tetrahedral = 0, Octahedral = 1, Icosahedral = 2, Menger = 3 };
 enum class HybridStep { Mandelbulb = 0, Mandelbox = 1 };
 inline constexpr int kHybridMaxSteps = 4;
+// A hybrid's orbit runs until |z| passes this radius (at least 100), not the
+// bailout: a Mandelbox step can carry z past a small bailout and fold it
+// back, so an early stop leaves a field with jumps the march steps over,
+// and the linear estimator r / dr is a bound only once r is large (it is
+// below the log estimator 0.5 log(r) r / dr for r > e^2). With 100 no
+// sampled ray passed a surface (the DeQuality test); with the bailout (3)
+// and the log estimator half of them did.
+inline double hybrid_escape_radius(double bailout) { return std::max(bailout, 100.0); }
 // Distance-estimation methods (`de:`), stored as a node's `method` parameter.
 enum class DeMethod { Analytic = 0, Jacobian = 1, Gradient = 2, Potential = 3, SinhPotential = 4 };
 inline const char* de_method_name(DeMethod m) {
