@@ -8,6 +8,8 @@
 namespace sdfc::codegen::detail {
 // Emits material_of() (a select chain over the plan's materials) and
 // shade_surface() (ambient folded to one constant, then one Blinn-Phong
-// term per light, unrolled with its values as literals).
-std::string emit_shading(const ir::RenderPlan& plan, const Literals& lit, std::set<std::string>& used);
+// term per light, unrolled with its values as literals). blended: the
+// scene mixes materials (scene_material), so shade_surface takes the mixed
+// albedo, specular and shininess instead of a material id.
+std::string emit_shading(const ir::RenderPlan& plan, const Literals& lit, std::set<std::string>& used, bool blended);
 }  // namespace sdfc::codegen::detail
