@@ -151,3 +151,54 @@ TEST(Specialisation, OrbitTrapOnlyAtTheHit) {
 
 }  // namespace
 }  // namespace sdfc
+
+namespace sdfc {
+namespace {
+
+std::string kernel_for(const std::string& scene) {
+  return codegen::emit_opencl(passes::run_pipeline(test::lower_text(
+                                  "materials: {red: {color: [1, 0, 0]}, blue: {color: [0, 0, 1]},\n"
+                                  "            pal: {orbit_trap: {palette: [[0, 0, 1], [1, 0.5, 0]]}}}\n" +
+                                  scene)),
+                              {8, false})
+      .source;
+}
+
+// Materials mix across a smooth blend only where its children show
+// different materials: every other kernel keeps the material id and holds
+// no blend code; the march (scene_dist) never holds it.
+TEST(Specialisation, MaterialBlendOnlyForSmoothBlendsOfDifferentMaterials) {
+  const char* blend_code[] = {"scene_material", "mat_record", "mat_mix", "op_weight_"};
+  const std::string red = "{sphere: {radius: 1}, material: red}";
+  const std::string blue = "{sphere: {radius: 1}, translate: [1, 0, 0], material: blue}";
+  const std::string grey = "{box: {}, translate: [0, 1, 0]}";
+  for (const std::string& scene : {
+           "scene: {union: [" + red + ", " + blue + "]}\n",                            // hard union
+           "scene: {smooth_union: {radius: 0.3, children: [" + red + ", " + red + "]}}\n",  // one material
+           "scene: {smooth_union: {radius: 0.3, children: [{sphere: {radius: 1}}, " + grey + "]}, material: blue}\n",
+           "scene: {chamfer_union: {radius: 0.3, children: [" + red + ", " + blue + "]}}\n",  // stylised: nearer child
+           "scene: {union: [{smooth_union: {radius: 0.3, children: [" + red + ", " + red + "]}}, " + blue + "]}\n",
+       }) {
+    std::string k = kernel_for(scene);
+    for (const char* c : blend_code) EXPECT_EQ(k.find(c), std::string::npos) << c << " in the kernel of\n" << scene;
+    EXPECT_NE(k.find("scene_dist_mat(pos, &id)"), std::string::npos) << scene;
+  }
+  for (const std::string& scene : {
+           "scene: {smooth_union: {radius: 0.3, children: [" + red + ", " + blue + "]}}\n",
+           "scene: {smooth_difference: {radius: 0.3, kind: cubic, children: [" + red + ", " + grey + "]}}\n",
+           "scene: {smooth_intersection: {radius: 0.3, kind: exponential, children: [" + blue + ", " + grey + "]}}\n",
+           // one orbit-trap material, two fractals: each has its own trap colour
+           std::string("scene: {smooth_union: {radius: 0.3, children: [{mandelbulb: {}}, {mandelbox: {}, translate: [3, 0, 0]}]},"
+                       " material: pal}\n"),
+       }) {
+    std::string k = kernel_for(scene);
+    for (const char* c : blend_code) EXPECT_NE(k.find(c), std::string::npos) << c << " missing in the kernel of\n" << scene;
+    size_t dist = k.find("real scene_dist(vec3 p)"), dist_end = k.find("\n}\n", dist);
+    ASSERT_NE(dist, std::string::npos);
+    EXPECT_EQ(k.substr(dist, dist_end - dist).find("mat_"), std::string::npos) << "blend code in the march";
+    EXPECT_EQ(k.find("scene_dist_mat(pos, &id)"), std::string::npos) << scene;
+  }
+}
+
+}  // namespace
+}  // namespace sdfc

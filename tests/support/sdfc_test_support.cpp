@@ -109,6 +109,39 @@ ProbeResult Probe::run(const std::vector<V3>& points) {
   return r;
 }
 
+std::vector<std::array<float, 6>> Probe::run_material(const std::vector<V3>& points) {
+  sdfrt::Kernel kernel = program_->kernel("sdfc_probe_material");
+  const size_t w = static_cast<size_t>(emitted_.simd_width);
+  const size_t n = points.size();
+  const size_t padded = std::max<size_t>(w, (n + w - 1) / w * w);
+  std::vector<float> x(padded, 0.0f), y(padded, 0.0f), z(padded, 0.0f);
+  for (size_t i = 0; i < n; ++i) {
+    x[i] = static_cast<float>(points[i][0]);
+    y[i] = static_cast<float>(points[i][1]);
+    z[i] = static_cast<float>(points[i][2]);
+  }
+  cl_context ctx = device().context();
+  cl_command_queue q = device().queue();
+  auto bx = make_buffer(ctx, CL_MEM_READ_ONLY, padded, x.data());
+  auto by = make_buffer(ctx, CL_MEM_READ_ONLY, padded, y.data());
+  auto bz = make_buffer(ctx, CL_MEM_READ_ONLY, padded, z.data());
+  auto bo = make_buffer(ctx, CL_MEM_WRITE_ONLY, 6 * padded, nullptr);
+  cl_mem args[4] = {bx.get(), by.get(), bz.get(), bo.get()};
+  for (unsigned i = 0; i < 4; ++i) kernel.set_arg(i, args[i]);
+  cl_int planes = static_cast<cl_int>(padded);
+  kernel.set_arg(4, planes);
+  size_t global = padded / w;
+  check(clEnqueueNDRangeKernel(q, kernel.get(), 1, nullptr, &global, nullptr, 0, nullptr, nullptr),
+        "clEnqueueNDRangeKernel(sdfc_probe_material)");
+  std::vector<float> out(6 * padded);
+  check(clEnqueueReadBuffer(q, bo.get(), CL_TRUE, 0, out.size() * sizeof(float), out.data(), 0, nullptr, nullptr),
+        "clEnqueueReadBuffer");
+  std::vector<std::array<float, 6>> r(n);
+  for (size_t i = 0; i < n; ++i)
+    for (size_t c = 0; c < 6; ++c) r[i][c] = out[c * padded + i];
+  return r;
+}
+
 double round_to_float(double x) {
   // volatile: GCC 12.2 at -O2 (SLP vectorizer) drops the double->float->double
   // round trip when it is written as plain casts over an array, which gave

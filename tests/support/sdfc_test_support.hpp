@@ -51,6 +51,10 @@ class Probe {
   // evaluate the reference at the same float-rounded coordinates
   // (see to_float_point).
   ProbeResult run(const std::vector<V3>& points);
+  // The blended material (sdfc_probe_material, emitted only for scenes with
+  // a smooth blend of differing materials): per point albedo r, g, b,
+  // specular, shininess, reflectivity.
+  std::vector<std::array<float, 6>> run_material(const std::vector<V3>& points);
   const codegen::EmittedKernel& emitted() const { return emitted_; }
 
  private:

@@ -71,7 +71,7 @@ std::optional<detail::RayBounds> march_bounds(const ir::Module& m) {
 // One ray segment: bounds, march, shading at the hit, background on a miss,
 // and the effects that belong to a segment (AO, glow, fog). The primary ray
 // and every reflection bounce run through it.
-std::string segment_function(const ir::Module& m, const Literals& lit, std::set<std::string>& used) {
+std::string segment_function(const ir::Module& m, const Literals& lit, std::set<std::string>& used, bool blended) {
   const ir::MarchSettings& s = m.plan.march;
   const ir::Effects& fx = m.plan.effects;
   bool any_shadows = false;
@@ -80,7 +80,9 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
   w.line("// ---- one ray segment: march, then shade the hit or the background ----");
   w.line(fmt::format("vec3 sdfc_segment(vec3 ro, vec3 rd, mask active, real pixel_angle, real jitter,{}",
                      fx.glow.enabled ? " real glow_weight," : ""));
-  w.line("                  real* t_out, mask* hit_out, vec3* n_out, real* mat_out, real* steps_out)");
+  const bool refl_out = blended && fx.reflections.depth > 0;
+  w.line(fmt::format("                  real* t_out, mask* hit_out, vec3* n_out, real* mat_out, real* steps_out{})",
+                     refl_out ? ", real* refl_out" : ""));
   w.open("{");
   if (auto bounds = march_bounds(m)) {
     const ir::Box3& b = bounds->box;
@@ -125,6 +127,7 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
                      lit.vec3(m.plan.background.top), lit.vec3(m.plan.background.bottom)));
   w.line("vec3 n = v3_splat(0.0f);");
   w.line("real mat = -1.0f;");
+  if (refl_out) w.line("real refl = 0.0f;");
   w.line("if (M_ANY(hit))");
   w.open("{");
   w.line("// shading runs once per packet with a hit, never inside the march");
@@ -137,7 +140,13 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
     used.insert(normal_fn);
     w.line(fmt::format("n = {}(pos, h);", normal_fn));
   }
-  if (auto uni = uniform_material(m)) {
+  std::string extra;
+  if (blended) {
+    w.line("real id;");
+    w.line("mat_record look;  // the materials mixed across smooth blends");
+    w.line("id = scene_material(pos, &look);");
+    if (refl_out) w.line("refl = SEL(refl, look.reflectivity, hit);");
+  } else if (auto uni = uniform_material(m)) {
     w.line(fmt::format("real id = {};  // the scene's one material: no distance evaluation needed", lit.typed(*uni)));
   } else {
     w.line("real id;");
@@ -146,8 +155,7 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
   w.line("mat = SEL(mat, id, hit);");
   bool traps = false;
   for (const auto& md : m.plan.materials) traps = traps || !md.trap_palette.empty();
-  std::string extra;
-  if (traps) {
+  if (traps && !blended) {
     w.line("real trap = scene_trap(pos);  // orbit-trap colour, once per hit");
     extra += ", trap";
   }
@@ -167,7 +175,8 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
   }
   if (any_shadows) extra += ", h, hit";
   if (!any_shadows) w.line("(void)h;");
-  w.line(fmt::format("vec3 lit = shade_surface(pos, n, v3_scale(rd, -1.0f), id{});", extra));
+  w.line(fmt::format("vec3 lit = shade_surface(pos, n, v3_scale(rd, -1.0f), {}{});",
+                     blended ? "look.albedo, look.specular, look.shininess" : "id", extra));
   w.line("color = v3_select(color, lit, hit);");
   w.close("}");
   if (fx.glow.enabled) {
@@ -192,7 +201,8 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
       w.line(fmt::format("color = fog_exponential(color, {}, fog_t, {});", lit.vec3(f.color), lit.real(f.density)));
     }
   }
-  w.line("*t_out = t; *hit_out = hit; *n_out = n; *mat_out = mat; *steps_out = steps;");
+  w.line(fmt::format("*t_out = t; *hit_out = hit; *n_out = n; *mat_out = mat; *steps_out = steps;{}",
+                     refl_out ? " *refl_out = refl;" : ""));
   w.line("return color;");
   w.close("}");
   return w.take();
@@ -201,7 +211,7 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
 // The colour seen along one camera ray: the primary segment and, with
 // effects.reflections, a bounded loop of mirror bounces weighted by
 // Fresnel-Schlick (no recursion in OpenCL C).
-std::string radiance_function(const ir::Module& m, std::set<std::string>& used) {
+std::string radiance_function(const ir::Module& m, std::set<std::string>& used, bool blended) {
   const int depth = m.plan.effects.reflections.depth;
   const bool glow = m.plan.effects.glow.enabled;
   CodeWriter w;
@@ -211,8 +221,12 @@ std::string radiance_function(const ir::Module& m, std::set<std::string>& used) 
   w.open("{");
   w.line("real t;");
   w.line("mask hit;");
-  w.line(fmt::format("vec3 color = sdfc_segment(ro, rd, M_TRUE, pixel_angle, jitter,{} &t, &hit, normal, mat, steps);",
-                     glow ? " 1.0f," : ""));
+  // blended: the segment hands back the mixed reflectivity, not only an id
+  const bool refl = blended && depth > 0;
+  if (refl) w.line("real refl;");
+  std::string refl_arg = refl ? ", &refl" : "";
+  w.line(fmt::format("vec3 color = sdfc_segment(ro, rd, M_TRUE, pixel_angle, jitter,{} &t, &hit, normal, mat, steps{});",
+                     glow ? " 1.0f," : "", refl_arg));
   w.line("*depth = SEL((real)(-1.0f), t, hit);  // -1 marks a miss");
   if (depth > 0) {
     used.insert("fresnel_schlick");
@@ -223,8 +237,9 @@ std::string radiance_function(const ir::Module& m, std::set<std::string>& used) 
     w.line("vec3 seg = color;");
     w.line(fmt::format("for (int bounce = 0; bounce < {} && M_ANY(alive); ++bounce)", depth));
     w.open("{");
-    w.line("real f = fresnel_schlick(material_reflectivity(id), -v3_dot(rd, n));");
-    w.line("alive = alive & (material_reflectivity(id) > 0.0f);");
+    std::string r0 = refl ? "refl" : "material_reflectivity(id)";
+    w.line(fmt::format("real f = fresnel_schlick({}, -v3_dot(rd, n));", r0));
+    w.line(fmt::format("alive = alive & ({} > 0.0f);", r0));
     w.line("// the surface keeps 1 - F of its own colour; F goes to what it reflects");
     w.line("real keep = SEL((real)(1.0f), 1.0f - f, alive);");
     w.line("sum = v3_add(sum, v3_mul(weight, v3_scale(seg, keep)));");
@@ -235,8 +250,8 @@ std::string radiance_function(const ir::Module& m, std::set<std::string>& used) 
     w.line("ro = v3_mad(p, n, 2.0f * footprint);");
     w.line("rd = v3_normalize(v3_mad(rd, n, -2.0f * v3_dot(rd, n)));");
     w.line("real s;");
-    w.line(fmt::format("seg = sdfc_segment(ro, rd, alive, pixel_angle, (real)(0.0f),{} &t, &hit, &n, &id, &s);",
-                       glow ? " 0.0f," : ""));
+    w.line(fmt::format("seg = sdfc_segment(ro, rd, alive, pixel_angle, (real)(0.0f),{} &t, &hit, &n, &id, &s{});",
+                       glow ? " 0.0f," : "", refl_arg));
     w.line("alive = alive & hit;");
     w.close("}");
     w.line("color = v3_add(sum, v3_mul(weight, seg));  // the last segment counts in full");
@@ -377,6 +392,27 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
   return w.take();
 }
 
+// The blended material at given points (tests): albedo r, g, b, specular,
+// shininess, reflectivity, each in its own plane of n floats.
+std::string probe_material_kernel() {
+  return R"(// ---- probe: the blended material at given points (tests and tools) ----
+__kernel void sdfc_probe_material(__global const float* px, __global const float* py, __global const float* pz,
+                                  __global float* out, const int n)
+{
+    const int i = get_global_id(0) * SDFC_WIDTH;
+    vec3 p = v3(LOAD_REAL(px + i), LOAD_REAL(py + i), LOAD_REAL(pz + i));
+    mat_record r;
+    (void)scene_material(p, &r);
+    STORE_REAL(r.albedo.x, out + i);
+    STORE_REAL(r.albedo.y, out + n + i);
+    STORE_REAL(r.albedo.z, out + 2 * n + i);
+    STORE_REAL(r.specular, out + 3 * n + i);
+    STORE_REAL(r.shininess, out + 4 * n + i);
+    STORE_REAL(r.reflectivity, out + 5 * n + i);
+}
+)";
+}
+
 std::string probe_kernel() {
   return R"(// ---- probe: the scene distance at given points (tests and tools) ----
 __kernel void sdfc_probe(__global const float* px, __global const float* py, __global const float* pz,
@@ -405,10 +441,13 @@ EmittedKernel emit_opencl(const ir::Module& m, const EmitOptions& opt) {
   std::string scene = detail::emit_scene_functions(m, lit, used);
   if (m.plan.march.normals == ir::NormalMethod::Dual) scene += "\n" + detail::emit_scene_gradient(m, lit, used);
   std::optional<detail::RayBounds> bounds = march_bounds(m);
-  std::string shading = detail::emit_shading(m.plan, lit, bounds ? &*bounds : nullptr, used);
-  std::string kernel = segment_function(m, lit, used) + "\n" + radiance_function(m, used) + "\n" +
+  const bool blended = detail::needs_material_blend(m);
+  std::string shading = detail::emit_shading(m.plan, lit, bounds ? &*bounds : nullptr, used, blended);
+  if (blended) shading += "\n" + detail::emit_scene_material(m, lit, used);
+  std::string kernel = segment_function(m, lit, used, blended) + "\n" + radiance_function(m, used, blended) + "\n" +
                        render_kernel(m, lit, used, opt.aovs);
   if (opt.probe_kernel) kernel += "\n" + probe_kernel();
+  if (opt.probe_kernel && blended) kernel += "\n" + probe_material_kernel();
 
   auto fns = StdlibManifest::instance().closure({used.begin(), used.end()});
   EmittedKernel k;

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "catalogue_emitter.hpp"
 #include "fractal_emitter.hpp"
@@ -22,16 +23,57 @@ using ir::NodeId;
 struct Value {
   std::string d;    // distance variable
   std::string mat;  // material variable or real-typed literal; "" when not tracked
+  std::string rec = "";  // blended material record (mat_record variable); scene_material only
 };
+
+// The same value with another distance (modifiers keep the material).
+Value with_d(Value v, std::string d) {
+  v.d = std::move(d);
+  return v;
+}
+
+// Smooth blends whose children's materials are mixed by the blend weight.
+bool smooth_kind(const ir::Node& n) {
+  switch (n.kind) {
+    case Kind::SmoothUnion:
+    case Kind::SmoothIntersection:
+    case Kind::SmoothDifference: return true;
+    case Kind::BlendUnion:
+    case Kind::BlendIntersection:
+    case Kind::BlendDifference: return n.params[0] < 2;  // cubic, exponential
+    default: return false;
+  }
+}
 
 class SceneEmitter {
  public:
   // trap: emit scene_trap instead, where the tracked value is the orbit
   // trap of the nearest fractal (chosen by the same rules as the material).
-  SceneEmitter(const ir::Module& m, const Literals& lit, bool with_mat, std::set<std::string>& used, bool trap = false)
-      : g_(*m.graph), lit_(lit), with_mat_(with_mat || trap), trap_(trap), used_(used), file_(m.source_name) {}
+  // blend: emit scene_material instead, which carries a material record
+  // (mat_record) up the tree and mixes it at smooth blends.
+  SceneEmitter(const ir::Module& m, const Literals& lit, bool with_mat, std::set<std::string>& used, bool trap = false,
+               bool blend = false)
+      : g_(*m.graph),
+        plan_(m.plan),
+        lit_(lit),
+        with_mat_(with_mat || trap || blend),
+        trap_(trap),
+        blend_(blend),
+        used_(used),
+        file_(m.source_name) {}
 
   std::string function(NodeId root) {
+    if (blend_) {
+      call("mat_record");
+      w_.line("real scene_material(vec3 p, mat_record* out)");
+      w_.open("{");
+      Value v = emit(root, "p");
+      w_.line("(void)" + v.d + ";");
+      w_.line("*out = " + v.rec + ";");
+      w_.line("return " + v.mat + ";  // the nearest material's id (the material AOV)");
+      w_.close("}");
+      return w_.take();
+    }
     w_.line(trap_ ? "real scene_trap(vec3 p)" : with_mat_ ? "real scene_dist_mat(vec3 p, real* mat)" : "real scene_dist(vec3 p)");
     w_.open("{");
     Value v = emit(root, "p");
@@ -74,7 +116,32 @@ class SceneEmitter {
   Value leaf(const ir::Node& n, const std::string& expr) {
     std::string d = var("d");
     w_.line(fmt::format("real {} = {};  // {}", d, expr, describe(n)));
+    if (blend_) return {d, lit_.typed(cur_mat_), record(n)};
     return {d, with_mat_ ? lit_.typed(0) : ""};
+  }
+
+  // scene_material: the leaf's material (the nearest material node above it)
+  // as a record; an orbit-trap palette is applied here, with the leaf's own
+  // trap (0 for geometry without one), so blends mix finished colours.
+  std::string record(const ir::Node& n) {
+    const ir::MaterialDef& md = plan_.materials.at(size_t(cur_mat_));
+    bool traps = false;
+    for (const auto& m : plan_.materials) traps = traps || !m.trap_palette.empty();
+    std::string rec = var("r");
+    w_.line(fmt::format("mat_record {};  // material {} '{}'", rec, cur_mat_, md.name));
+    std::string trap;
+    if (traps) {
+      trap = lit_.typed(0);
+      if (!md.trap_palette.empty() && is_fractal(n)) {
+        std::string t = emit_fractal_trap(n, leaf_p_, lit_, used_);
+        if (!t.empty()) trap = t;
+      }
+      trap = ", " + trap;
+    }
+    w_.line(fmt::format("material_of({}, &{}.albedo, &{}.specular, &{}.shininess{});", lit_.typed(cur_mat_), rec, rec, rec,
+                        trap));
+    w_.line(fmt::format("{}.reflectivity = {};", rec, lit_.typed(md.reflectivity)));
+    return rec;
   }
 
   // A node's distance, divided by its Lipschitz constant where the
@@ -88,7 +155,7 @@ class SceneEmitter {
     std::string scaled = fmt::format("{} * {}", v.d, lit_.real(1.0 / n.props.lipschitz));
     if (!r.finite()) {
       w_.line(fmt::format("real {} = {};  // L = {:.4g} > 1: divide by L", d, scaled, n.props.lipschitz));
-      return {d, v.mat};
+      return with_d(v, d);
     }
     // L holds inside the region only; outside it the distance to the node's
     // bounds is the bound (the surface lies inside them, at least the
@@ -100,11 +167,12 @@ class SceneEmitter {
     w_.line(fmt::format("real {} = dm_box_outside({}, {}, {});  // the node's bounds", b, p,
                         lit_.vec3(n.props.bounds.lo), lit_.vec3(n.props.bounds.hi)));
     w_.line(fmt::format("real {} = SEL({}, {}, {} > 0.0f);  // divide by L inside, bounds distance outside", d, scaled, b, o));
-    return {d, v.mat};
+    return with_d(v, d);
   }
 
   Value emit_node(NodeId id, const std::string& p) {
     const ir::Node& n = g_.node(id);
+    leaf_p_ = p;  // for record(): leaves do not recurse, so this is still theirs
     const auto& q = n.params;
     auto r = [&](size_t i) { return lit_.real(q[i]); };
     switch (n.kind) {
@@ -136,15 +204,16 @@ class SceneEmitter {
         Value c = emit(n.children[0], p2);
         std::string d = var("d");
         w_.line(fmt::format("real {} = {} * {};  // undo the scale on the distance", d, c.d, r(0)));
-        return {d, c.mat};
+        return with_d(c, d);
       }
       case Kind::StepFactor: {
         Value c = emit(n.children[0], p);
         std::string d = var("d");
         w_.line(fmt::format("real {} = {} * {};  // {}", d, c.d, r(0), describe(n)));
-        return {d, c.mat};
+        return with_d(c, d);
       }
       case Kind::Bounded: {
+        if (blend_) return emit(n.children[0], p);  // once per hit: no box test
         // Skip the subtree while every lane is farther from its box than the
         // margin: the box distance is a lower bound of the subtree's.
         ir::Vec3d c, h;
@@ -163,6 +232,13 @@ class SceneEmitter {
         return {d, m};
       }
       case Kind::Material: {
+        if (blend_) {  // top-down: the material nearest the geometry is set last
+          double outer = cur_mat_;
+          cur_mat_ = q[0];
+          Value c = emit(n.children[0], p);
+          cur_mat_ = outer;
+          return c;
+        }
         Value c = emit(n.children[0], p);
         if (!with_mat_ || trap_) return c;
         std::string id = lit_.typed(q[0]);
@@ -214,7 +290,7 @@ class SceneEmitter {
         std::string d = var("d");
         w_.line(fmt::format("real {} = {} * {};  // the smallest factor keeps it a bound", d, c.d,
                             lit_.real(std::min({q[0], q[1], q[2]}))));
-        return {d, c.mat};
+        return with_d(c, d);
       }
       case Kind::Round:
       case Kind::Onion:
@@ -225,7 +301,7 @@ class SceneEmitter {
                          : n.kind == Kind::Onion ? fmt::format("fabs({}) - {}", c.d, r(0))
                                                  : fmt::format("fmax({0}, -{0} - {1})", c.d, r(0));
         w_.line(fmt::format("real {} = {};  // {}", d, e, describe(n)));
-        return {d, c.mat};
+        return with_d(c, d);
       }
       case Kind::Displace: {
         Value c = emit(n.children[0], p);
@@ -234,7 +310,7 @@ class SceneEmitter {
             e, [&](std::string_view v) { return p + "." + std::string(v); }, [&](double x) { return lit_.typed(x); });
         std::string d = var("d");
         w_.line(fmt::format("real {} = {} + {};  // displace {}{}", d, c.d, body, expr::to_string(e), where(n)));
-        return {d, c.mat};
+        return with_d(c, d);
       }
       default:
         if (auto e = catalogue_call(n, p, lit_, used_)) return leaf(n, *e);
@@ -262,8 +338,11 @@ class SceneEmitter {
     for (const auto& k : kids) any_mat = any_mat || k.mat != lit_.typed(0);
     if (track && !any_mat) track = false, m = lit_.typed(0);
     if (track) w_.line(fmt::format("real {} = {};", m, kids[0].mat));
+    std::string rec = blend_ ? var("r") : "";
+    if (blend_) w_.line(fmt::format("mat_record {} = {};", rec, kids[0].rec));
     for (size_t i = 1; i < kids.size(); ++i) {
       const Value& k = kids[i];
+      if (blend_) blend_record(n, rec, d, k);
       switch (n.kind) {
         case Kind::Union:
           if (track) w_.line(fmt::format("{} = SEL({}, {}, {} < {});", m, m, k.mat, k.d, d));
@@ -302,7 +381,28 @@ class SceneEmitter {
         default: break;
       }
     }
-    return {d, with_mat_ ? m : ""};
+    return {d, with_mat_ ? m : "", rec};
+  }
+
+  // scene_material: folds child k's record into rec (the children before it,
+  // whose combined distance is d), before d takes k in. Smooth blends mix by
+  // the share of k in the blended distance (its derivative in k's distance);
+  // the intersection is -U(-a, -b) and the difference -U(-a, b), so their
+  // weights are the union's at the negated distances. Hard operations and
+  // the stylised blends take the nearer child; a difference keeps the first.
+  void blend_record(const ir::Node& n, const std::string& rec, const std::string& d, const Value& k) {
+    bool uni = n.kind == Kind::Union || n.kind == Kind::SmoothUnion || n.kind == Kind::BlendUnion;
+    bool inter = n.kind == Kind::Intersection || n.kind == Kind::SmoothIntersection || n.kind == Kind::BlendIntersection;
+    if (!smooth_kind(n)) {
+      if (uni || inter)
+        w_.line(fmt::format("{} = mat_select({}, {}, {} {} {});", rec, rec, k.rec, k.d, uni ? "<" : ">", d));
+      return;
+    }
+    bool poly = n.kind == Kind::SmoothUnion || n.kind == Kind::SmoothIntersection || n.kind == Kind::SmoothDifference;
+    std::string fn = poly ? "op_weight_polynomial" : n.params[0] == 0 ? "op_weight_cubic" : "op_weight_exponential";
+    std::string radius = lit_.typed(poly ? n.params[0] : n.params[1]);
+    std::string a = uni ? d : "-" + d, b = inter ? "-" + k.d : k.d;
+    w_.line(fmt::format("{} = mat_mix({}, {}, {}({}, {}, {}));  // blend weight", rec, rec, k.rec, call(fn), a, b, radius));
   }
 
   // The union-style blend of a and b for a Blend* node.
@@ -348,14 +448,15 @@ class SceneEmitter {
     Value v = cells(n, points);
     std::string d = var("d");
     w_.line(fmt::format("real {} = fmin({}, {});  // copies beyond the neighbours are farther", d, v.d, rest));
-    return {d, v.mat};
+    return with_d(v, d);
   }
 
   // The minimum of the child over several points (one loop, the child's code once).
   Value cells(const ir::Node& n, const std::vector<std::string>& points) {
-    std::string d = var("d"), m = with_mat_ ? var("m") : "", c = var("c");
+    std::string d = var("d"), m = with_mat_ ? var("m") : "", c = var("c"), rec = blend_ ? var("r") : "";
     w_.line(fmt::format("real {} = {};", d, lit_.typed(1e30)));
     if (with_mat_) w_.line(fmt::format("real {} = {};", m, lit_.typed(0)));
+    if (blend_) w_.line(fmt::format("mat_record {} = mat_none();", rec));
     w_.open(fmt::format("for (int {0} = 0; {0} < {1}; ++{0}) {{", c, points.size()));
     std::string pc = var("p");
     std::string pick = points.back();
@@ -363,21 +464,71 @@ class SceneEmitter {
     w_.line(fmt::format("vec3 {} = {};", pc, pick));
     Value k = emit(n.children[0], pc);
     if (with_mat_) w_.line(fmt::format("{} = SEL({}, {}, {} < {});", m, m, k.mat, k.d, d));
+    if (blend_) w_.line(fmt::format("{} = mat_select({}, {}, {} < {});", rec, rec, k.rec, k.d, d));
     w_.line(fmt::format("{} = fmin({}, {});", d, d, k.d));
     w_.close("}");
-    return {d, m};
+    return {d, m, rec};
   }
 
   const ir::Graph& g_;
+  const ir::RenderPlan& plan_;
   const Literals& lit_;
   bool with_mat_;
   bool trap_;
+  bool blend_;
+  double cur_mat_ = 0;  // scene_material: the material of the nearest material node above
+  std::string leaf_p_;
   std::set<std::string>& used_;
   std::string file_;
   CodeWriter w_;
 };
 
+// The materials a subtree shows, as keys: the material id, or for a
+// material with an orbit-trap palette one key per leaf (each leaf has its own
+// trap, so two leaves of one such material still differ). Sets `blend` when
+// a smooth blend's children show more than one key.
+class BlendFinder {
+ public:
+  explicit BlendFinder(const ir::Module& m) : g_(*m.graph), plan_(m.plan) {}
+  bool found(NodeId root) {
+    keys(root, 0);
+    return blend_;
+  }
+
+ private:
+  std::set<long> keys(NodeId id, double mat) {
+    auto memo = memo_.find({id, mat});
+    if (memo != memo_.end()) return memo->second;
+    const ir::Node& n = g_.node(id);
+    std::set<long> out;
+    if (n.kind == Kind::Material) mat = n.params[0];
+    if (n.children.empty()) {
+      bool trap = !plan_.materials.at(size_t(mat)).trap_palette.empty();
+      out.insert(trap ? -1 - long(id) : long(mat));
+    }
+    for (NodeId c : n.children) {
+      std::set<long> k = keys(c, mat);
+      out.insert(k.begin(), k.end());
+    }
+    if (smooth_kind(n) && out.size() > 1) blend_ = true;
+    memo_.emplace(std::make_pair(id, mat), out);
+    return out;
+  }
+
+  const ir::Graph& g_;
+  const ir::RenderPlan& plan_;
+  bool blend_ = false;
+  std::map<std::pair<NodeId, double>, std::set<long>> memo_;
+};
+
 }  // namespace
+
+bool needs_material_blend(const ir::Module& m) { return BlendFinder(m).found(m.root); }
+
+std::string emit_scene_material(const ir::Module& m, const Literals& lit, std::set<std::string>& used) {
+  std::string out = "// ---- scene material: evaluated once per hit; smooth blends mix their children's materials ----\n";
+  return out + SceneEmitter(m, lit, false, used, false, true).function(m.root);
+}
 
 std::string emit_scene_functions(const ir::Module& m, const Literals& lit, std::set<std::string>& used) {
   used.insert("vec3_ops");
@@ -387,7 +538,7 @@ std::string emit_scene_functions(const ir::Module& m, const Literals& lit, std::
   out += SceneEmitter(m, lit, true, used).function(m.root);
   bool traps = false;
   for (const auto& md : m.plan.materials) traps = traps || !md.trap_palette.empty();
-  if (traps) {
+  if (traps && !needs_material_blend(m)) {  // with blends, scene_material applies the traps
     out += "\n// ---- orbit trap of the nearest fractal: evaluated once per hit, for orbit-trap materials ----\n";
     out += SceneEmitter(m, lit, false, used, true).function(m.root);
   }

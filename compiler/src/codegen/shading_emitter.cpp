@@ -57,7 +57,8 @@ std::string shadow_call(const ir::Light& l, const std::string& to_light, std::st
 
 }  // namespace
 
-std::string emit_shading(const ir::RenderPlan& plan, const Literals& lit, const RayBounds* bounds, std::set<std::string>& used) {
+std::string emit_shading(const ir::RenderPlan& plan, const Literals& lit, const RayBounds* bounds, std::set<std::string>& used,
+                         bool blended) {
   CodeWriter w;
   const auto& mats = plan.materials;
   bool traps = false;  // any orbit-trap material: the trap value comes along
@@ -82,7 +83,7 @@ std::string emit_shading(const ir::RenderPlan& plan, const Literals& lit, const 
   w.close("}");
   w.blank();
 
-  if (plan.effects.reflections.depth > 0) {
+  if (plan.effects.reflections.depth > 0 && !blended) {  // blended: the record carries it
     w.line("// ---- reflectivity per material (Fresnel-Schlick R0) ----");
     w.line("real material_reflectivity(real id)");
     w.open("{");
@@ -100,12 +101,15 @@ std::string emit_shading(const ir::RenderPlan& plan, const Literals& lit, const 
   bool any_shadows = false;
   for (const auto& l : plan.lights) any_shadows |= l.shadows != ir::Light::Shadows::None;
   w.line("// ---- lighting: v points from the surface to the eye ----");
-  w.line(fmt::format("vec3 shade_surface(vec3 p, vec3 n, vec3 v, real mat{}{}{})", trap_param, ao ? ", real occlusion" : "",
+  std::string mat_params = blended ? "vec3 albedo, real specular, real shininess" : "real mat" + trap_param;
+  w.line(fmt::format("vec3 shade_surface(vec3 p, vec3 n, vec3 v, {}{}{})", mat_params, ao ? ", real occlusion" : "",
                      any_shadows ? ", real footprint, mask hit" : ""));
   w.open("{");
-  w.line("vec3 albedo;");
-  w.line("real specular, shininess;");
-  w.line(std::string("material_of(mat, &albedo, &specular, &shininess") + (traps ? ", trap" : "") + ");");
+  if (!blended) {
+    w.line("vec3 albedo;");
+    w.line("real specular, shininess;");
+    w.line(std::string("material_of(mat, &albedo, &specular, &shininess") + (traps ? ", trap" : "") + ");");
+  }
   ir::Vec3d ambient{0, 0, 0};
   for (const auto& l : plan.lights)
     if (l.kind == ir::LightKind::Ambient)

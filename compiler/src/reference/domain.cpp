@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numbers>
 #include <vector>
 
+#include "materials.hpp"
 #include "sdfc/expr/expr.hpp"
 
 namespace sdfc::reference::detail {
@@ -145,24 +147,29 @@ std::optional<Sample> domain_evaluate(const ir::Graph& g, const ir::Node& n, con
       return child({p[0] - std::clamp(p[0], -q[0], q[0]), p[1] - std::clamp(p[1], -q[1], q[1]), p[2] - std::clamp(p[2], -q[2], q[2])});
     case Kind::Round: {
       Sample s = child(p);
-      return Sample{s.distance - q[0], s.material};
+      s.distance = s.distance - q[0];
+      return s;
     }
     case Kind::Onion: {
       Sample s = child(p);
-      return Sample{std::fabs(s.distance) - q[0], s.material};
+      s.distance = std::fabs(s.distance) - q[0];
+      return s;
     }
     case Kind::Shell: {
       Sample s = child(p);
-      return Sample{std::max(s.distance, -s.distance - q[0]), s.material};
+      s.distance = std::max(s.distance, -s.distance - q[0]);
+      return s;
     }
     case Kind::ScaleXYZ: {
       Sample s = child({p[0] / q[0], p[1] / q[1], p[2] / q[2]});
-      return Sample{s.distance * std::min({q[0], q[1], q[2]}), s.material};
+      s.distance = s.distance * std::min({q[0], q[1], q[2]});
+      return s;
     }
     case Kind::Displace: {
       Sample s = child(p);
       expr::Env env{{"x", p[0]}, {"y", p[1]}, {"z", p[2]}};
-      return Sample{s.distance + expr::evaluate(g.expressions.at(size_t(q[0])), env), s.material};
+      s.distance += expr::evaluate(g.expressions.at(size_t(q[0])), env);
+      return s;
     }
     case Kind::BlendUnion:
     case Kind::BlendIntersection:
@@ -171,14 +178,28 @@ std::optional<Sample> domain_evaluate(const ir::Graph& g, const ir::Node& n, con
       int style = int(q[0]);
       for (size_t i = 1; i < n.children.size(); ++i) {
         Sample s = evaluate(g, n.children[i], p);
+        // As blend(a, b) of the children's own distances: the union's dual.
+        // blend(a, nb): nb is B's distance as it enters, negated for a difference.
+        std::function<double(double, double)> blend;
+        bool take_b = false;  // B is the nearer child
+        double nb = s.distance;
         if (n.kind == Kind::BlendUnion) {
-          int mat = s.distance < acc.distance ? s.material : acc.material;
-          acc = {blend_union(style, acc.distance, s.distance, q[1], q[2]), mat};
+          take_b = s.distance < acc.distance;
+          blend = [&](double a, double b) { return blend_union(style, a, b, q[1], q[2]); };
         } else if (n.kind == Kind::BlendIntersection) {
-          int mat = s.distance > acc.distance ? s.material : acc.material;
-          acc = {-blend_union(style, -acc.distance, -s.distance, q[1], q[2]), mat};
+          take_b = s.distance > acc.distance;
+          blend = [&](double a, double b) { return -blend_union(style, -a, -b, q[1], q[2]); };
         } else {
-          acc.distance = -blend_union(style, -acc.distance, s.distance, q[1], q[2]);
+          nb = -s.distance;
+          blend = [&](double a, double b) { return -blend_union(style, -a, -b, q[1], q[2]); };
+        }
+        double d = blend(acc.distance, nb);
+        if (style < 2) {  // cubic, exponential: the materials mix by B's share
+          acc = mix_samples(acc, s, share_of_b(blend, acc.distance, nb), d, take_b ? s.material : acc.material);
+        } else if (take_b) {
+          acc = s, acc.distance = d;
+        } else {
+          acc.distance = d;  // the nearer child's material (a difference keeps the first)
         }
       }
       return acc;

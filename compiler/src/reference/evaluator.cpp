@@ -9,6 +9,7 @@
 #include "fractals.hpp"
 #include "catalogue.hpp"
 #include "domain.hpp"
+#include "materials.hpp"
 #include "sdfc/ir/fractal_math.hpp"
 
 namespace sdfc::reference {
@@ -72,8 +73,10 @@ Sample evaluate(const ir::Graph& g, ir::NodeId id, const Vec3& p) {
   const ir::Props& pr = g.node(id).props;
   if (!pr.corrected) return s;
   if (pr.lipschitz_region.finite() && box_outside(p, pr.lipschitz_region) > 0)
-    return {box_outside(p, pr.bounds), s.material};
-  return {s.distance / pr.lipschitz, s.material};
+    s.distance = box_outside(p, pr.bounds);
+  else
+    s.distance /= pr.lipschitz;
+  return s;
 }
 
 namespace {
@@ -113,7 +116,8 @@ Sample evaluate_node(const ir::Graph& g, ir::NodeId id, const Vec3& p) {
       return {mandelbulb(p, q[0], int(q[1]), q[2]), 0};
     case Kind::StepFactor: {
       Sample s = evaluate(g, n.children[0], p);
-      return {s.distance * q[0], s.material};
+      s.distance *= q[0];
+      return s;
     }
     case Kind::Juliabulb: return {fractals::juliabulb(p, q), 0};
     case Kind::Mandelbox:
@@ -132,7 +136,8 @@ Sample evaluate_node(const ir::Graph& g, ir::NodeId id, const Vec3& p) {
     }
     case Kind::Scale: {
       Sample s = evaluate(g, n.children[0], {p[0] / q[0], p[1] / q[0], p[2] / q[0]});
-      return {s.distance * q[0], s.material};
+      s.distance *= q[0];
+      return s;
     }
     case Kind::Bounded: {
       // The box's exact distance is a lower bound of the child's; far enough
@@ -146,7 +151,8 @@ Sample evaluate_node(const ir::Graph& g, ir::NodeId id, const Vec3& p) {
     }
     case Kind::Material: {
       Sample s = evaluate(g, n.children[0], p);
-      return {s.distance, s.material != 0 ? s.material : int(q[0])};
+      detail::claim(s, int(q[0]));
+      return s;
     }
     case Kind::Union:
     case Kind::SmoothUnion:
@@ -161,17 +167,29 @@ Sample evaluate_node(const ir::Graph& g, ir::NodeId id, const Vec3& p) {
           case Kind::Union:
             if (s.distance < acc.distance) acc = s;
             break;
-          case Kind::SmoothUnion:
-            acc = {smin_poly(acc.distance, s.distance, q[0]), s.distance < acc.distance ? s.material : acc.material};
+          case Kind::SmoothUnion: {
+            auto u = [&](double a, double b) { return smin_poly(a, b, q[0]); };
+            acc = detail::mix_samples(acc, s, detail::share_of_b(u, acc.distance, s.distance), u(acc.distance, s.distance),
+                                      s.distance < acc.distance ? s.material : acc.material);
             break;
+          }
           case Kind::Intersection:
             if (s.distance > acc.distance) acc = s;
             break;
-          case Kind::SmoothIntersection:
-            acc = {smax_poly(acc.distance, s.distance, q[0]), s.distance > acc.distance ? s.material : acc.material};
+          case Kind::SmoothIntersection: {
+            auto i = [&](double a, double b) { return smax_poly(a, b, q[0]); };
+            acc = detail::mix_samples(acc, s, detail::share_of_b(i, acc.distance, s.distance), i(acc.distance, s.distance),
+                                      s.distance > acc.distance ? s.material : acc.material);
             break;
+          }
           case Kind::Difference: acc.distance = std::max(acc.distance, -s.distance); break;
-          case Kind::SmoothDifference: acc.distance = smax_poly(acc.distance, -s.distance, q[0]); break;
+          case Kind::SmoothDifference: {
+            // The share of B is the derivative in -b, B's own distance negated.
+            auto i = [&](double a, double nb) { return smax_poly(a, nb, q[0]); };
+            acc = detail::mix_samples(acc, s, detail::share_of_b(i, acc.distance, -s.distance), i(acc.distance, -s.distance),
+                                      acc.material);
+            break;
+          }
           default: break;
         }
       }
@@ -191,5 +209,27 @@ Sample evaluate_node(const ir::Graph& g, ir::NodeId id, const Vec3& p) {
 }
 
 }  // namespace
+
+}  // namespace sdfc::reference
+
+namespace sdfc::reference {
+
+Look evaluate_material(const ir::Module& m, const Vec3& p) {
+  Sample s = evaluate(*m.graph, m.root, p);
+  std::vector<std::pair<int, double>> shares = s.shares;
+  if (shares.empty()) shares = {{s.material, 1.0}};
+  Look look{{0, 0, 0}, 0, 0, 0, s.material};
+  for (const auto& [id, w] : shares) {
+    const ir::MaterialDef& md = m.plan.materials.at(size_t(id));
+    Vec3 albedo = md.color;
+    if (!md.trap_palette.empty())  // trap 0: the palette's first colour
+      for (int c = 0; c < 3; ++c) albedo[c] += (md.trap_palette[0][c] - albedo[c]) * md.trap_mix;
+    for (int c = 0; c < 3; ++c) look.albedo[c] += w * albedo[c];
+    look.specular += w * md.specular;
+    look.shininess += w * md.shininess;
+    look.reflectivity += w * md.reflectivity;
+  }
+  return look;
+}
 
 }  // namespace sdfc::reference
