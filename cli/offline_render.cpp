@@ -27,22 +27,43 @@ int plane_of(const sdfrt::KernelSpec& spec, const std::string& name) {
   return static_cast<int>(it - spec.planes.begin());
 }
 
+// The hit mask of a band: 1 where depth >= 0 (a hit), 0 on a miss.
+sdfrt::FloatImage hit_mask(const sdfrt::FloatImage& band, int depth_plane) {
+  sdfrt::FloatImage m(band.width, band.height, {"hit"});
+  auto d = band.plane(depth_plane);
+  auto h = m.plane(0);
+  for (std::size_t i = 0; i < d.size(); ++i) h[i] = d[i] >= 0.0f ? 1.0f : 0.0f;
+  return m;
+}
+
 struct AovWriters {
   std::vector<std::unique_ptr<sdfrt::BandWriter>> writers;
   std::vector<std::string> paths;
-  AovWriters(const sdfrt::KernelSpec& spec, const OfflineFrame& f, const OfflineOutput& out) {
-    for (const auto& a : out.aovs) {
+  std::vector<int> derived_from;  // for "hit": the depth plane; -1 otherwise
+  AovWriters(const sdfrt::KernelSpec& spec, int width, int height, const std::string& beauty,
+             const std::vector<std::string>& aovs) {
+    for (const auto& a : aovs) {
       std::vector<int> planes;
+      derived_from.push_back(a == "hit" ? plane_of(spec, "depth") : -1);
       if (a == "normal")
         planes = {plane_of(spec, "normal_x"), plane_of(spec, "normal_y"), plane_of(spec, "normal_z")};
+      else if (a == "hit")
+        planes = {0};
       else
         planes = {plane_of(spec, a)};
-      paths.push_back(aov_path(out.beauty, a));
-      writers.push_back(sdfrt::open_pfm_writer(paths.back(), f.width, f.height, planes));
+      paths.push_back(aov_path(beauty, a));
+      writers.push_back(sdfrt::open_pfm_writer(paths.back(), width, height, planes));
     }
   }
+  AovWriters(const sdfrt::KernelSpec& spec, const OfflineFrame& f, const OfflineOutput& out)
+      : AovWriters(spec, f.width, f.height, out.beauty, out.aovs) {}
   void write(const sdfrt::FloatImage& band) {
-    for (auto& w : writers) w->write_band(band);
+    for (std::size_t i = 0; i < writers.size(); ++i) {
+      if (derived_from[i] >= 0)
+        writers[i]->write_band(hit_mask(band, derived_from[i]));
+      else
+        writers[i]->write_band(band);
+    }
   }
   void finish() {
     for (auto& w : writers) w->finish();
@@ -120,6 +141,14 @@ struct RunningMean {
 };
 
 }  // namespace
+
+std::vector<std::string> write_aovs(const sdfrt::KernelSpec& spec, const sdfrt::FloatImage& image,
+                                    const std::string& beauty, const std::vector<std::string>& aovs) {
+  AovWriters w(spec, image.width, image.height, beauty, aovs);
+  w.write(image);
+  w.finish();
+  return w.paths;
+}
 
 std::string aov_path(const std::string& beauty, const std::string& aov) {
   std::filesystem::path p(beauty);

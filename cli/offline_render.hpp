@@ -23,8 +23,9 @@ struct OfflineOutput {
   bool keep_partial = false;
 };
 
-// The AOVs --aov accepts, and the kernel planes each one reads.
-inline const std::vector<std::string> kAovNames = {"depth", "normal", "steps", "material"};
+// The AOVs --aov accepts, and the kernel planes each one reads ("hit" is
+// derived from depth: 1 where the ray hit, 0 on a miss).
+inline const std::vector<std::string> kAovNames = {"depth", "normal", "steps", "material", "hit"};
 
 // "<dir>/<stem>.<aov>.pfm" beside the beauty image.
 std::string aov_path(const std::string& beauty, const std::string& aov);
@@ -43,6 +44,10 @@ struct OfflineFrame {
 // partial image if asked).
 std::vector<std::string> render_offline(sdfrt::Renderer& renderer, const OfflineFrame& f, const OfflineOutput& out,
                                         int tile, std::atomic<bool>* cancel);
+
+// Writes the AOVs of a whole rendered image (--repeat); returns the paths.
+std::vector<std::string> write_aovs(const sdfrt::KernelSpec& spec, const sdfrt::FloatImage& image,
+                                    const std::string& beauty, const std::vector<std::string>& aovs);
 
 // Frame numbers from --frames: "N", "A:B" (inclusive) or "A:B:STEP".
 // Throws std::invalid_argument with what was expected.

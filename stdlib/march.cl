@@ -114,3 +114,51 @@ inline real ray_sphere_exit(vec3 ro, vec3 rd, vec3 c, real r, real tmax)
     mask meets = ray_sphere(ro, rd, c, r, &t0, &t1);
     return SEL((real)(0.0f), fmin(t1, tmax), meets);
 }
+
+//! fn march_sphere_trace_refined
+//! deps: vec3_ops
+//! after-scene
+//! class: helper
+// The reference march (render.refine: bisection): march_sphere_trace that
+// remembers the last point outside, then brackets the surface and bisects
+// it. The bracket is [last point outside, hit] when the hit landed inside
+// (d < 0, an overshoot), or [hit, hit + 2 eps] when a point that close
+// ahead is inside; a lane without a sign change keeps its hit, which is
+// within hit_eps pixels already. Also returns the closest approach (glow).
+inline mask march_sphere_trace_refined(vec3 ro, vec3 rd, real t0, real t1, mask active,
+                                       real pixel_angle, real hit_eps, real step_factor,
+                                       int max_steps, real* t_out, real* steps, real* closest)
+{
+    real t = t0, t_prev = t0, d_hit = 0.0f;
+    mask hit = active & !active;
+    real n = 0.0f;
+    real c = (real)(1e30f);
+    for (int i = 0; i < max_steps && M_ANY(active); ++i) {
+        real d = scene_dist(v3_mad(ro, rd, t));
+        c = SEL(c, fmin(c, d), active);
+        mask now_hit = active & (d < hit_eps * pixel_angle * fmax(t, K(1e-4f)));
+        d_hit = SEL(d_hit, d, now_hit);
+        hit = hit | now_hit;
+        active = active & !now_hit;
+        n = SEL(n, n + 1.0f, active | now_hit);
+        t_prev = SEL(t_prev, t, active);
+        t = SEL(t, t + d * step_factor, active);
+        active = active & (t < t1);
+    }
+    real eps = hit_eps * pixel_angle * fmax(t, K(1e-4f));
+    real ahead = t + 2.0f * eps;
+    mask inside_ahead = hit & (d_hit >= 0.0f) & (scene_dist(v3_mad(ro, rd, ahead)) < 0.0f);
+    mask bracketed = (hit & (d_hit < 0.0f)) | inside_ahead;
+    real lo = SEL(t_prev, t, inside_ahead), hi = SEL(t, ahead, inside_ahead);
+    for (int i = 0; i < 60 && M_ANY(bracketed); ++i) {
+        real mid = 0.5f * (lo + hi);
+        mask in = scene_dist(v3_mad(ro, rd, mid)) < 0.0f;
+        hi = SEL(hi, mid, bracketed & in);
+        lo = SEL(lo, mid, bracketed & !in);
+    }
+    // the outside end of the bracket: shading and normals see the surface from outside
+    *t_out = SEL(t, lo, bracketed);
+    *steps = n;
+    *closest = c;
+    return hit;
+}

@@ -60,6 +60,21 @@ TEST(ImageMetrics, IdenticalRendersHaveNoError) {
   EXPECT_NE(format_json(m).find("\"psnr_db\": null"), std::string::npos);
 }
 
+// Holes (the reference hits, the test misses) and hits behind the
+// reference's surface count as passing it; extra hits in front do not.
+TEST(ImageMetrics, HolesAndOvershootAreCounted) {
+  std::string ref = save(make(20, 1, 0, 0), "pass_ref");
+  ComparisonMetrics fewer = compare_renders(load_render_outputs(ref), load_render_outputs(save(make(17, 1, 0, 0), "holes")));
+  EXPECT_NEAR(fewer.holes_pct, 100.0 * 3 * kH / (kW * kH), 1e-9);
+  EXPECT_NEAR(fewer.passed_pct, fewer.holes_pct, 1e-9);
+  ComparisonMetrics behind = compare_renders(load_render_outputs(ref), load_render_outputs(save(make(20, 1.02, 0, 0), "behind")));
+  EXPECT_EQ(behind.holes_pct, 0);
+  EXPECT_NEAR(behind.passed_pct, 50.0, 1e-9);  // every hit is 2 % behind
+  ComparisonMetrics front = compare_renders(load_render_outputs(ref), load_render_outputs(save(make(23, 0.98, 0, 0), "front")));
+  EXPECT_EQ(front.passed_pct, 0);
+  EXPECT_NE(format_json(behind).find("\"passed_pct\": 50"), std::string::npos) << format_json(behind);
+}
+
 TEST(ImageMetrics, KnownErrorsAreMeasured) {
   // Test: 3 more hit columns, depths 0.1 % long, normals tilted 2 degrees,
   // colours 51/255 = 0.2 brighter (exact in 8 bits).

@@ -112,7 +112,14 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
     w.line("(void)jitter;");
   }
   w.line("real t, steps;");
-  if (fx.glow.enabled) {
+  if (s.refine == ir::MarchSettings::Refine::Bisection) {
+    used.insert("march_sphere_trace_refined");
+    w.line("// render.refine: bisection - bracket the surface after the hit and bisect it");
+    w.line("real closest;");
+    w.line(fmt::format("mask hit = march_sphere_trace_refined(ro, rd, t0, t1, active, pixel_angle, {}, {}, {}, &t, &steps, &closest);",
+                       lit.real(s.hit_epsilon), lit.real(s.step_factor), s.max_steps));
+    if (!fx.glow.enabled) w.line("(void)closest;");
+  } else if (fx.glow.enabled) {
     used.insert("march_sphere_trace_closest");
     w.line("real closest;");
     w.line(fmt::format("mask hit = march_sphere_trace_closest(ro, rd, t0, t1, active, pixel_angle, {}, {}, {}, &t, &steps, &closest);",
@@ -132,7 +139,11 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
   w.open("{");
   w.line("// shading runs once per packet with a hit, never inside the march");
   w.line("vec3 pos = v3_mad(ro, rd, t);");
-  w.line("real h = fmax(pixel_angle * t * 0.5f, K(1e-6f));  // finite-difference step: half a pixel footprint");
+  if (s.normal_step == 0.5)
+    w.line("real h = fmax(pixel_angle * t * 0.5f, K(1e-6f));  // finite-difference step: half a pixel footprint");
+  else
+    w.line(fmt::format("real h = fmax(pixel_angle * t * {}, K(1e-6f));  // render.normal_step: {} pixel footprints",
+                       lit.real(s.normal_step), s.normal_step));
   if (s.normals == ir::NormalMethod::Dual) {
     w.line("n = scene_normal_dual(pos);  // exact gradient by forward-mode differentiation");
   } else {

@@ -88,7 +88,7 @@ void read_camera(ValueReader& r, const SourceValue& v, ir::Camera& cam) {
 void read_render(ValueReader& r, const SourceValue& v, ir::MarchSettings& s) {
   MapReader m(r, v, "render", {"width", "height", "precision", "max_steps", "hit_epsilon", "max_distance",
                                "step_factor", "gamma", "normals", "lipschitz_correction", "samples", "filter",
-                               "dither", "exposure", "tone_mapping"});
+                               "dither", "exposure", "tone_mapping", "normal_step", "refine"});
   s.width = m.integer("width", s.width, 1, 16384);
   s.height = m.integer("height", s.height, 1, 16384);
   s.precision = m.word("precision", "float", {"float", "double"}) == "double" ? ir::Precision::Double : ir::Precision::Float;
@@ -102,6 +102,9 @@ void read_render(ValueReader& r, const SourceValue& v, ir::MarchSettings& s) {
   s.normals = normals == "central" ? ir::NormalMethod::Central
               : normals == "dual"  ? ir::NormalMethod::Dual
                                    : ir::NormalMethod::Tetrahedral;
+  s.normal_step = m.number("normal_step", s.normal_step, {0, 100, true});
+  s.refine = m.word("refine", "none", {"none", "bisection"}) == "bisection" ? ir::MarchSettings::Refine::Bisection
+                                                                             : ir::MarchSettings::Refine::None;
   s.samples = m.integer("samples", s.samples, 1, 1024);
   s.filter = m.word("filter", "box", {"box", "tent"}) == "tent" ? ir::MarchSettings::Filter::Tent
                                                                  : ir::MarchSettings::Filter::Box;

@@ -63,6 +63,9 @@ std::string print_plan(const RenderPlan& p) {
                      r.width, r.height, r.precision == Precision::Float ? "float" : "double", r.max_steps,
                      num(r.hit_epsilon), num(r.max_distance), num(r.step_factor), num(r.gamma),
                      r.normals == NormalMethod::Tetrahedral ? "tetrahedral" : r.normals == NormalMethod::Central ? "central" : "dual");
+  if (r.normal_step != 0.5 || r.refine != MarchSettings::Refine::None)
+    out += fmt::format("render normal_step={} refine={}\n", num(r.normal_step),
+                       r.refine == MarchSettings::Refine::Bisection ? "bisection" : "none");
   out += fmt::format("background top={} bottom={}\n", vec(p.background.top), vec(p.background.bottom));
   for (size_t i = 0; i < p.lights.size(); ++i) {
     const Light& l = p.lights[i];

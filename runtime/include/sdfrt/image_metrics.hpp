@@ -23,6 +23,11 @@ struct ComparisonMetrics {
   int width = 0, height = 0;
   bool has_depth = false, has_normal = false;
   double hit_mask_disagreement_pct = 0;  // pixels where one hits and the other misses
+  double holes_pct = 0;   // the reference hits, the test misses (a hole in the test)
+  // The test passed the reference's surface: a hole, or a hit more than 1 %
+  // of the distance behind the reference's (overshoot; a lower-bound march
+  // with a larger hit epsilon stops in front, never behind).
+  double passed_pct = 0;
   double depth_rel_error_median = 0, depth_rel_error_p99 = 0;  // |d - d_ref| / d_ref, both hit
   double normal_error_deg_median = 0, normal_error_deg_p99 = 0;  // angle, both hit
   // Pixels where some display-encoded channel differs by more than

@@ -111,12 +111,14 @@ ComparisonMetrics compare_renders(const RenderOutputs& ref, const RenderOutputs&
         test.depth->height != b.height)
       throw std::invalid_argument("a depth AOV does not match its image's size");
     m.has_normal = ref.normal && test.normal;
-    size_t disagree = 0;
+    size_t disagree = 0, holes = 0, passed = 0;
     std::vector<double> depth_err, normal_err;
     for (size_t i = 0; i < n; ++i) {
       bool ha = da[i] >= 0, hb = db[i] >= 0;
       if (ha != hb) ++disagree;
+      if (ha && !hb) ++holes, ++passed;
       if (!(ha && hb)) continue;
+      if (double(db[i]) > 1.01 * double(da[i])) ++passed;
       depth_err.push_back(std::fabs(double(db[i]) - double(da[i])) / std::max(double(da[i]), 1e-12));
       if (m.has_normal) {
         double dot = 0;
@@ -125,6 +127,8 @@ ComparisonMetrics compare_renders(const RenderOutputs& ref, const RenderOutputs&
       }
     }
     m.hit_mask_disagreement_pct = 100.0 * double(disagree) / double(n);
+    m.holes_pct = 100.0 * double(holes) / double(n);
+    m.passed_pct = 100.0 * double(passed) / double(n);
     m.depth_rel_error_median = quantile(depth_err, 0.5);
     m.depth_rel_error_p99 = quantile(depth_err, 0.99);
     m.normal_error_deg_median = quantile(normal_err, 0.5);
@@ -137,6 +141,8 @@ std::string format_table(const ComparisonMetrics& m) {
   std::string s = fmt::format("{:<32} {}\n", "size", fmt::format("{}x{}", m.width, m.height));
   if (m.has_depth) {
     s += fmt::format("{:<32} {:.4f} %\n", "hit-mask disagreement", m.hit_mask_disagreement_pct);
+    s += fmt::format("{:<32} {:.4f} %\n", "holes (reference hits only)", m.holes_pct);
+    s += fmt::format("{:<32} {:.4f} %\n", "passed the reference surface", m.passed_pct);
     s += fmt::format("{:<32} {:.3e} / {:.3e}\n", "depth error, median / p99", m.depth_rel_error_median, m.depth_rel_error_p99);
   } else {
     s += fmt::format("{:<32} {}\n", "hit mask, depth", "no depth AOVs (render with --aov depth,normal)");
@@ -160,6 +166,8 @@ std::string format_json(const ComparisonMetrics& m) {
   if (m.has_depth)
     s += fmt::format(", \"hit_mask_disagreement_pct\": {}, \"depth_rel_error_median\": {}, \"depth_rel_error_p99\": {}",
                      num(m.hit_mask_disagreement_pct), num(m.depth_rel_error_median), num(m.depth_rel_error_p99));
+  if (m.has_depth)
+    s += fmt::format(", \"holes_pct\": {}, \"passed_pct\": {}", num(m.holes_pct), num(m.passed_pct));
   if (m.has_normal)
     s += fmt::format(", \"normal_error_deg_median\": {}, \"normal_error_deg_p99\": {}", num(m.normal_error_deg_median),
                      num(m.normal_error_deg_p99));

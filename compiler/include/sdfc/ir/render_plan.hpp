@@ -49,6 +49,9 @@ struct MarchSettings {
   bool lipschitz_correction = true;  // divide subtrees with L > 1 by L (issue 9)
   double gamma = 2.2;
   NormalMethod normals = NormalMethod::Tetrahedral;
+  double normal_step = 0.5;  // finite-difference normal step, in pixel footprints at the hit
+  // After a hit, bracket the surface and bisect it (the reference render).
+  enum class Refine { None, Bisection } refine = Refine::None;
   // Anti-aliasing: jittered samples per pixel and the reconstruction filter
   // (box: one pixel wide; tent: two pixels wide, importance-sampled).
   int samples = 1;
