@@ -89,24 +89,28 @@ inline real ipow_real(real x, int n)
 //! fn bulb_power_int
 //! deps: vec3_ops, cpow_int, ipow_real
 //! class: helper
-// White-Nylander z^n for an integer n with no trig: with cos t = z/r,
-// sin t = rho/r (rho = |(x, y)|) and cos f = x/rho, sin f = y/rho, the
-// power-n angles come from ((z + i rho)/r)^n and ((x + i y)/rho)^n.
+// White-Nylander z^n for an integer n with no trig, given r = |z|: with
+// cos t = z/r, sin t = rho/r (rho = |(x, y)|) and cos f = x/rho,
+// sin f = y/rho, (z + i rho)^n = r^n (cos nt + i sin nt) needs no division,
+// and the azimuth's multiples come from ((x + i y)/rho)^n. One square root
+// and one division per step (the caller's r is the orbit's own).
 // Returns z^n and sets *r_pow_n_minus_1 = r^(n-1) for the derivative.
-inline vec3 bulb_power_int(vec3 z, int n, real* r_pow_n_minus_1)
+inline vec3 bulb_power_int_r(vec3 z, real r, int n, real* r_pow_n_minus_1)
 {
-    real r = v3_length(z);
     real rho = sqrt(z.x * z.x + z.y * z.y);
-    real inv_r = 1.0f / fmax(r, K(1e-20f));
     mask on_axis = rho < 1e-20f;  // on the z axis the azimuth is 0, as in the trig formula
     real inv_rho = 1.0f / fmax(rho, K(1e-20f));
-    real cos_nt, sin_nt, cos_nf, sin_nf;
-    cpow_int(z.z * inv_r, rho * inv_r, n, &cos_nt, &sin_nt);
+    real rn_cos_nt, rn_sin_nt, cos_nf, sin_nf;
+    cpow_int(z.z, rho, n, &rn_cos_nt, &rn_sin_nt);
     cpow_int(SEL(z.x * inv_rho, (real)(1.0f), on_axis), SEL(z.y * inv_rho, (real)(0.0f), on_axis), n, &cos_nf, &sin_nf);
-    real rn1 = ipow_real(r, n - 1);
-    *r_pow_n_minus_1 = rn1;
-    real rn = rn1 * r;
-    return v3(rn * sin_nt * cos_nf, rn * sin_nt * sin_nf, rn * cos_nt);
+    *r_pow_n_minus_1 = ipow_real(r, n - 1);
+    return v3(rn_sin_nt * cos_nf, rn_sin_nt * sin_nf, rn_cos_nt);
+}
+
+// The same when r is not at hand.
+inline vec3 bulb_power_int(vec3 z, int n, real* r_pow_n_minus_1)
+{
+    return bulb_power_int_r(z, v3_length(z), n, r_pow_n_minus_1);
 }
 
 //! fn de_mandelbulb_int
@@ -127,7 +131,7 @@ inline real de_mandelbulb_int(vec3 p, int power, int iterations, real bailout, r
     mask alive = r < bailout;
     for (int i = 0; i < iterations && M_ANY(alive); ++i) {
         real rn1;
-        vec3 z_next = v3_add(bulb_power_int(z, power, &rn1), add);
+        vec3 z_next = v3_add(bulb_power_int_r(z, r, power, &rn1), add);
         real dr_next = rn1 * (real)((scalar)power) * dr + dr_add;
         z = v3_select(z, z_next, alive);
         dr = SEL(dr, dr_next, alive);
