@@ -23,6 +23,7 @@ struct CompileArgs {
   std::vector<std::string> dump_after;
   std::string output = "-";
   int simd_width = 0;
+  int packet_rows = 0;
   bool stats = false;
   bool build = false;
   std::string device;
@@ -69,7 +70,7 @@ int run_compile(const CompileArgs& a) {
       &tm);
   auto t1 = std::chrono::steady_clock::now();
   codegen::EmittedKernel k;
-  if (a.emit == "cl" || a.stats) k = codegen::emit_opencl(m, {a.simd_width > 0 ? a.simd_width : default_simd_width(true), false});
+  if (a.emit == "cl" || a.stats) k = codegen::emit_opencl(m, {a.simd_width > 0 ? a.simd_width : default_simd_width(true), false, false, a.packet_rows});
   double emit_ms = ms(t1);
   if (a.emit == "ir" && a.dump_after.empty()) out += ir::print(m);
   if (a.emit == "cl") out += k.source;
@@ -106,6 +107,8 @@ Action add_compile(CLI::App& app) {
   cmd->add_option("-o,--output", a->output, "Write to FILE instead of stdout");
   cmd->add_option("--simd-width", a->simd_width, "Pixels per work-item: 1 (GPU form) or 2/4/8/16 (CPU packets); "
                                                  "default: the width render picks for a CPU device")
+      ->check(CLI::IsMember({1, 2, 4, 8, 16}));
+  cmd->add_option("--packet-rows", a->packet_rows, "Pixel rows per packet, dividing --simd-width (default: 4 at width 16)")
       ->check(CLI::IsMember({1, 2, 4, 8, 16}));
   cmd->add_flag("--stats", a->stats, "Print the time of each stage and the kernel's size on stderr");
   cmd->add_flag("--build", a->build, "With --stats: also build the kernel on the device and time it "

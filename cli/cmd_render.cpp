@@ -48,6 +48,7 @@ struct RenderArgs {
   int width = 0, height = 0;
   std::string device;
   int simd_width = 0;
+  int packet_rows = 0;
   int tile = 256;
   int repeat = 0;
   bool quiet = false;
@@ -116,16 +117,18 @@ int run_render(RenderArgs a) {
                                          device.info().device_name));
   codegen::EmitOptions eo;
   eo.simd_width = width;
+  eo.packet_rows = a.packet_rows;
   eo.aovs = !a.aovs.empty();
   codegen::EmittedKernel k = codegen::emit_opencl(m, eo);
   if (!a.kernel_file.empty()) k.source = read_kernel_file(a.kernel_file);
-  sdfrt::KernelSpec spec{k.source, k.entry, k.simd_width, k.planes, ""};
+  sdfrt::KernelSpec spec{k.source, k.entry, k.simd_width, k.packet_rows, k.planes, ""};
   // One build serves every frame: time and the camera are frame parameters.
   sdfrt::Renderer renderer(device, spec);
   const auto& bs = renderer.build_stats();
   if (!a.quiet)
-    std::cerr << fmt::format("device: {}; kernel built in {:.0f} ms{}; {} pixel(s) per work-item\n",
-                             device.info().device_name, bs.build_ms, bs.cache_hit ? " (cached)" : "", k.simd_width);
+    std::cerr << fmt::format("device: {}; kernel built in {:.0f} ms{}; {} pixel(s) per work-item ({}x{})\n",
+                             device.info().device_name, bs.build_ms, bs.cache_hit ? " (cached)" : "", k.simd_width,
+                             k.simd_width / k.packet_rows, k.packet_rows);
 
   const int w = m.plan.march.width, h = m.plan.march.height;
   std::signal(SIGINT, on_sigint);
@@ -201,6 +204,9 @@ Action add_render(CLI::App& app) {
   cmd->add_option("--device", a->device, "Device id from 'sdfc devices' (P:D, an index or part of the name); "
                                          "default: $SDFC_DEVICE, else the first CPU device");
   cmd->add_option("--simd-width", a->simd_width, "Pixels per work-item: 1 or 2/4/8/16 (default: 16 on CPUs, 1 on GPUs)")
+      ->check(CLI::IsMember({1, 2, 4, 8, 16}));
+  cmd->add_option("--packet-rows", a->packet_rows,
+                  "Pixel rows per packet, dividing --simd-width (default: 4 at width 16, i.e. 4x4 pixels; else 1)")
       ->check(CLI::IsMember({1, 2, 4, 8, 16}));
   cmd->add_option("--tile", a->tile, "Tile size in pixels (default 256)")->check(CLI::Range(16, 16384));
   cmd->add_option("--repeat", a->repeat, "Render one warm-up and N timed frames; print each time and the median")

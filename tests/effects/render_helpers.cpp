@@ -22,7 +22,7 @@ Rendered render_text(const std::string& scene, int simd_width, int tile) {
   opt.simd_width = simd_width;
   opt.aovs = true;
   codegen::EmittedKernel k = codegen::emit_opencl(r.module, opt);
-  sdfrt::Renderer renderer(device(), {k.source, k.entry, k.simd_width, k.planes, ""});
+  sdfrt::Renderer renderer(device(), {k.source, k.entry, k.simd_width, k.packet_rows, k.planes, ""});
   const int w = r.module.plan.march.width, h = r.module.plan.march.height;
   sdfrt::RenderOptions ro;
   ro.tile_width = ro.tile_height = tile;

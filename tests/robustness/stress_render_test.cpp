@@ -37,7 +37,7 @@ TEST_P(StressScene, RendersWithoutNaNOrInf) {
   SourceValue doc = load_scene_source(path, {"render.width=45", "render.height=29"});
   ir::Module m = build_module(doc, path);
   auto k = codegen::emit_opencl(m, {16, false});
-  sdfrt::Renderer r(device(), {k.source, k.entry, k.simd_width, k.planes, ""});
+  sdfrt::Renderer r(device(), {k.source, k.entry, k.simd_width, k.packet_rows, k.planes, ""});
   sdfrt::RenderOptions opt;
   opt.tile_width = opt.tile_height = 16;
   sdfrt::FloatImage img = r.render(codegen::frame_params(m.plan, 45, 29, 0.0), 45, 29, opt);

@@ -33,7 +33,7 @@ sdfrt::Device& device() {
 std::vector<std::uint8_t> offline_render(const std::string& path, const ir::Camera& camera, int w, int h) {
   ir::Module m = build_module(load_scene_source(path, {}), path);
   codegen::EmittedKernel k = codegen::emit_opencl(m, {16, false});
-  sdfrt::Renderer r(device(), {k.source, k.entry, k.simd_width, k.planes, ""});
+  sdfrt::Renderer r(device(), {k.source, k.entry, k.simd_width, k.packet_rows, k.planes, ""});
   m.plan.camera = camera;
   return sdfrt::to_rgb8(r.render(codegen::frame_params(m.plan, w, h, 0.0), w, h));
 }

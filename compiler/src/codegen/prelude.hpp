@@ -4,5 +4,6 @@
 #include "sdfc/ir/render_plan.hpp"
 
 namespace sdfc::codegen::detail {
-std::string prelude(int width, ir::Precision precision);
+// rows: pixel rows per packet (width / rows pixels per row).
+std::string prelude(int width, int rows, ir::Precision precision);
 }

@@ -5,9 +5,11 @@
 //   __kernel void sdfc_render(__global float* out, __global const float* frame,
 //       const int img_w, const int img_h, const int tile_x0, const int tile_y0,
 //       const int tile_w, const int tile_h, const int out_stride)
-// Work-item (gx, gy) covers pixels x = tile_x0 + gx*simd_width + lane,
-// y = tile_y0 + gy and stores plane k of pixel (x-tile_x0, y-tile_y0) at
-// out[k*out_stride*tile_h + (y-tile_y0)*out_stride + (x-tile_x0)].
+// A packet is pw x ph pixels (ph = packet_rows, pw = simd_width / ph).
+// Work-item (gx, gy) covers pixels x = tile_x0 + gx*pw + lane % pw,
+// y = tile_y0 + gy*ph + lane / pw and stores plane k of pixel
+// (x-tile_x0, y-tile_y0) at out[k*out_stride*tile_h + (y-tile_y0)*out_stride + (x-tile_x0)].
+// tile_w and tile_h are given rounded up to whole packets.
 #include <sdfrt/device.hpp>
 #include <sdfrt/float_image.hpp>
 #include <sdfrt/program.hpp>
@@ -26,6 +28,7 @@ struct KernelSpec {
   std::string source;
   std::string entry = "sdfc_render";
   int simd_width = 1;
+  int packet_rows = 1;              // pixel rows per packet; divides simd_width
   std::vector<std::string> planes;  // e.g. {"r","g","b","depth"}
   std::string build_options;
 };

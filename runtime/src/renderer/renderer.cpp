@@ -39,6 +39,10 @@ Renderer::Renderer(Device& device, const KernelSpec& spec) : device_(&device), s
     throw std::invalid_argument(
         fmt::format("KernelSpec.simd_width must be at least 1, got {}", spec_.simd_width));
   }
+  if (spec_.packet_rows < 1 || spec_.simd_width % spec_.packet_rows != 0) {
+    throw std::invalid_argument(fmt::format("KernelSpec.packet_rows must divide simd_width {}, got {}",
+                                            spec_.simd_width, spec_.packet_rows));
+  }
   if (spec_.planes.empty()) {
     throw std::invalid_argument("KernelSpec.planes is empty: the kernel must output at least one plane");
   }
@@ -86,12 +90,14 @@ FloatImage Renderer::render(const std::vector<float>& frame, int width, int heig
                                             options.row_begin + band_rows, height));
   // Tiles are planned over the band; the kernel sees image rows.
   const TilePlan plan = plan_tiles(width, band_rows, options.tile_width, options.tile_height);
-  const int simd = spec_.simd_width;
+  const int ph = spec_.packet_rows;
+  const int pw = spec_.simd_width / ph;
   const std::size_t planes = spec_.planes.size();
 
   // The largest tile decides the buffer; refuse before allocating anything.
-  const std::size_t max_stride = static_cast<std::size_t>(ceil_div(plan.max_width, simd)) * simd;
-  const std::size_t max_floats = planes * max_stride * static_cast<std::size_t>(plan.max_height);
+  const std::size_t max_stride = static_cast<std::size_t>(ceil_div(plan.max_width, pw)) * pw;
+  const std::size_t max_rows = static_cast<std::size_t>(ceil_div(plan.max_height, ph)) * ph;
+  const std::size_t max_floats = planes * max_stride * max_rows;
   const std::uint64_t max_bytes = max_floats * sizeof(float);
   if (max_bytes > device_->info().max_alloc_bytes) {
     throw std::invalid_argument(fmt::format(
@@ -134,16 +140,18 @@ FloatImage Renderer::render(const std::vector<float>& frame, int width, int heig
     // full tile size when uniform (the excess lands in ignored rows/lanes).
     const int launch_w = options.uniform_launch ? plan.max_width : tile.width;
     const int launch_h = options.uniform_launch ? plan.max_height : tile.height;
-    const int groups_x = ceil_div(launch_w, simd);
-    const int stride = groups_x * simd;
+    const int groups_x = ceil_div(launch_w, pw);
+    const int groups_y = ceil_div(launch_h, ph);
+    const int stride = groups_x * pw;
+    const int rows = groups_y * ph;  // whole packets; the excess rows are dropped
     kernel.set_arg(kTileX0, static_cast<cl_int>(tile.x0));
     kernel.set_arg(kTileY0, static_cast<cl_int>(tile.y0 + options.row_begin));
-    kernel.set_arg(kTileW, static_cast<cl_int>(launch_w));
-    kernel.set_arg(kTileH, static_cast<cl_int>(launch_h));
+    kernel.set_arg(kTileW, static_cast<cl_int>(stride));
+    kernel.set_arg(kTileH, static_cast<cl_int>(rows));
     kernel.set_arg(kOutStride, static_cast<cl_int>(stride));
 
     const std::size_t global[2] = {static_cast<std::size_t>(groups_x),
-                                   static_cast<std::size_t>(launch_h)};
+                                   static_cast<std::size_t>(groups_y)};
     cl_event raw_event = nullptr;
     check_cl(clEnqueueNDRangeKernel(device_->queue(), kernel.get(), 2, nullptr, global, nullptr, 0,
                                     nullptr, &raw_event),
@@ -151,7 +159,7 @@ FloatImage Renderer::render(const std::vector<float>& frame, int width, int heig
                          tile.width, tile.height, tile.x0, tile.y0));
     EventHandle event(raw_event);
     const std::size_t tile_floats =
-        planes * static_cast<std::size_t>(stride) * static_cast<std::size_t>(launch_h);
+        planes * static_cast<std::size_t>(stride) * static_cast<std::size_t>(rows);
     // Blocking read on an in-order queue also waits for the kernel.
     check_cl(clEnqueueReadBuffer(device_->queue(), out, CL_TRUE, 0, tile_floats * sizeof(float),
                                  host.data(), 0, nullptr, nullptr),
@@ -163,7 +171,7 @@ FloatImage Renderer::render(const std::vector<float>& frame, int width, int heig
       auto dst = image.plane(static_cast<int>(k));
       for (int row = 0; row < tile.height; ++row) {
         const float* src =
-            host.data() + (k * static_cast<std::size_t>(launch_h) + static_cast<std::size_t>(row)) *
+            host.data() + (k * static_cast<std::size_t>(rows) + static_cast<std::size_t>(row)) *
                               static_cast<std::size_t>(stride);
         float* to = dst.data() + static_cast<std::size_t>(tile.y0 + row) * static_cast<std::size_t>(width) +
                     static_cast<std::size_t>(tile.x0);

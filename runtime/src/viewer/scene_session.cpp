@@ -44,7 +44,7 @@ void SceneSession::compile() {
   SourceValue doc = load_scene_source(options_.path, options_.sets);
   auto m = std::make_unique<ir::Module>(build_module(doc, options_.path));
   codegen::EmittedKernel k = codegen::emit_opencl(*m, {options_.simd_width, false});
-  sdfrt::KernelSpec spec{k.source, k.entry, k.simd_width, k.planes, ""};
+  sdfrt::KernelSpec spec{k.source, k.entry, k.simd_width, k.packet_rows, k.planes, ""};
   auto r = std::make_unique<sdfrt::Renderer>(*device_, spec);
   module_ = std::move(m);
   renderer_ = std::move(r);

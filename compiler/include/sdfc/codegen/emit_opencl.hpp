@@ -3,7 +3,8 @@
 // runtime's ABI (sdfrt/renderer.hpp):
 //   __kernel void sdfc_render(__global float* out, __global const float* frame,
 //       int img_w, int img_h, int tile_x0, int tile_y0, int tile_w, int tile_h, int out_stride)
-// Each work-item shades `simd_width` adjacent pixels: the stdlib is written
+// Each work-item shades a packet of `simd_width` pixels (a tile of
+// packet_rows rows): the stdlib is written
 // over `real`/`vec3`/`mask`, which the prelude defines per width and precision.
 #include <string>
 #include <vector>
@@ -16,12 +17,16 @@ struct EmitOptions {
   int simd_width = 1;  // 1 (GPUs, one pixel per work-item) or 2/4/8/16 (CPU packets)
   bool probe_kernel = false;  // also emit sdfc_probe, which evaluates the distance at given points
   bool aovs = false;          // also store normal_x/y/z, steps and material planes after r, g, b, depth
+  // Pixel rows per packet, a power of two dividing simd_width; 0 picks the
+  // default: 4 at width 16 (4x4 tiles, which keep a packet's rays coherent), else 1.
+  int packet_rows = 0;
 };
 
 struct EmittedKernel {
   std::string source;
   std::string entry = "sdfc_render";
   int simd_width = 1;
+  int packet_rows = 1;              // the packet is (simd_width / packet_rows) x packet_rows pixels
   std::vector<std::string> planes;  // output planes, in order
   int frame_floats = 0;             // length of the frame parameter block
   std::vector<std::string> stdlib_functions;  // which stdlib functions it holds
