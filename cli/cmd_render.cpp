@@ -61,19 +61,9 @@ struct RenderArgs {
   bool reference = false;
 };
 
-// --reference: the same view, slow but trustworthy (issue 6): double
-// precision, hits within 1e-6 of the pixel footprint, 20000 steps of half the
-// distance, every hit bisected, central-difference normals in double (dual
-// normals stay dual: they are exact already); depth, normal and hit AOVs.
+// --reference: ir::make_reference, plus the depth, normal and hit AOVs.
 void make_reference(ir::MarchSettings& s, std::vector<std::string>& aovs) {
-  s.precision = ir::Precision::Double;
-  s.hit_epsilon = 1e-6;
-  s.max_steps = 20000;
-  s.step_factor = 0.5;
-  s.refine = ir::MarchSettings::Refine::Bisection;
-  if (s.normals != ir::NormalMethod::Dual) s.normals = ir::NormalMethod::Central;
-  s.normal_step = 0.5;
-  s.dither = false;
+  ir::make_reference(s);
   for (const char* a : {"depth", "normal", "hit"})
     if (std::find(aovs.begin(), aovs.end(), a) == aovs.end()) aovs.push_back(a);
 }

@@ -142,7 +142,7 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
   if (s.normal_step == 0.5)
     w.line("real h = fmax(pixel_angle * t * 0.5f, K(1e-6f));  // finite-difference step: half a pixel footprint");
   else
-    w.line(fmt::format("real h = fmax(pixel_angle * t * {}, K(1e-6f));  // render.normal_step: {} pixel footprints",
+    w.line(fmt::format("real h = fmax(pixel_angle * t * {}, K(1e-12f));  // render.normal_step: {} pixel footprints",
                        lit.real(s.normal_step), s.normal_step));
   if (s.normals == ir::NormalMethod::Dual) {
     w.line("n = scene_normal_dual(pos);  // exact gradient by forward-mode differentiation");

@@ -62,6 +62,21 @@ struct MarchSettings {
   enum class ToneMapping { Clamp, Reinhard, Aces } tone_mapping = ToneMapping::Clamp;
 };
 
+// The reference render (sdfc render --reference, issue 6): the same view,
+// slow but trustworthy: double precision, hits within 1e-6 of the pixel
+// footprint, 20000 steps of half the distance, every hit bisected,
+// central-difference normals (dual normals stay: they are exact already).
+inline void make_reference(MarchSettings& s) {
+  s.precision = Precision::Double;
+  s.hit_epsilon = 1e-6;
+  s.max_steps = 20000;
+  s.step_factor = 0.5;
+  s.refine = MarchSettings::Refine::Bisection;
+  if (s.normals != NormalMethod::Dual) s.normals = NormalMethod::Central;
+  s.normal_step = 0.5;
+  s.dither = false;
+}
+
 struct Background {
   Vec3d top{0.45, 0.55, 0.7};
   Vec3d bottom{0.15, 0.17, 0.22};
