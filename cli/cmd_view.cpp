@@ -82,10 +82,12 @@ Action add_view(CLI::App& app) {
       ->check(CLI::Range(1, 1024));
   cmd->add_option("--screenshot-dir", a->screenshot_dir, "Where P saves screenshots (default: the current directory)");
   cmd->add_option("--benchmark", a->benchmark,
-                  "Orbit the target for SECONDS at full resolution, print frame-time statistics and exit")
+                  "Render at full resolution for SECONDS, playing the scene's camera.path (else orbiting the "
+                  "target), print frame-time statistics and exit")
       ->check(CLI::Range(0.1, 3600.0));
   cmd->add_option("--orbit-degrees", a->orbit_degrees,
-                  "How far the benchmark orbit turns in its SECONDS (default 360; 0 = camera still)")
+                  "How far the benchmark orbit turns in its SECONDS (default 360; 0 = camera still); "
+                  "scenes with a camera.path play the path instead")
       ->check(CLI::Range(-36000.0, 36000.0));
   return [a] { return run_view(*a); };
 }

@@ -18,7 +18,8 @@ int main(int argc, char** argv) {
   CLI::App app{"sdfc: compiles signed-distance and fractal scenes (YAML) to one OpenCL kernel and renders them",
                "sdfc"};
   app.footer(
-      "Exit codes: 0 success, 1 scene error, 2 usage error, 3 device/OpenCL error, 4 output not written.\n"
+      "Exit codes: 0 success, 1 scene error, 2 usage error, 3 device/OpenCL error, 4 output not written,\n"
+      "130 stopped by Ctrl-C.\n"
       "Environment: SDFC_DEVICE picks the device (see 'sdfc devices'); SDFC_CACHE_DIR and\n"
       "SDFC_KERNEL_CACHE=0 control the kernel binary cache.");
   app.require_subcommand(1);

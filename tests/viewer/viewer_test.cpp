@@ -2,6 +2,7 @@
 // driver), real kernels on PoCL. The P key's screenshot must equal an
 // offline render; saving the scene swaps the kernel; a broken save keeps it.
 #include <SDL.h>
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <stb_image.h>
 #include <sys/wait.h>
@@ -36,6 +37,21 @@ std::vector<std::uint8_t> offline_render(const std::string& path, const ir::Came
   sdfrt::Renderer r(device(), {k.source, k.entry, k.simd_width, k.packet_rows, k.planes, ""});
   m.plan.camera = camera;
   return sdfrt::to_rgb8(r.render(codegen::frame_params(m.plan, w, h, 0.0), w, h));
+}
+
+// Mean of the `steps` AOV of the same render, from a kernel built with AOVs.
+double offline_mean_steps(const std::string& path, const ir::Camera& camera, int w, int h) {
+  ir::Module m = build_module(load_scene_source(path, {}), path);
+  codegen::EmitOptions eo;
+  eo.simd_width = 16;
+  eo.aovs = true;
+  codegen::EmittedKernel k = codegen::emit_opencl(m, eo);
+  sdfrt::Renderer r(device(), {k.source, k.entry, k.simd_width, k.planes, ""});
+  m.plan.camera = camera;
+  sdfrt::FloatImage img = r.render(codegen::frame_params(m.plan, w, h, 0.0), w, h);
+  double sum = 0;
+  for (float s : img.plane(img.plane_index("steps"))) sum += s;
+  return sum / double(img.plane_size());
 }
 
 std::vector<std::uint8_t> read_png(const std::string& path, int& w, int& h) {
@@ -127,6 +143,10 @@ TEST(Viewer, ScreenshotFromThePKeyMatchesAnOfflineRender) {
   EXPECT_TRUE(v.last_frame().rendered);
   EXPECT_EQ(v.last_frame().width, opt.width);
   EXPECT_EQ(v.last_frame().samples, 1);
+  // F1's steps/pixel is the mean of the kernel's steps AOV for that frame.
+  const double steps = offline_mean_steps(scene_path, v.rig().camera(), opt.width, opt.height);
+  EXPECT_GT(steps, 1.0);
+  EXPECT_NEAR(v.last_frame().steps, steps, 0.005 * steps);
   ASSERT_TRUE(v.step());
   EXPECT_EQ(v.last_frame().samples, 2);  // refines with a second sample when still
 
@@ -160,6 +180,8 @@ TEST(Viewer, ScreenshotFromThePKeyMatchesAnOfflineRender) {
   ASSERT_TRUE(v.step());
   EXPECT_TRUE(v.overlay());
   EXPECT_NE(window.title().find("fps"), std::string::npos) << window.title();
+  EXPECT_NE(window.title().find(fmt::format("{:.1f} steps/pixel", v.last_frame().steps)), std::string::npos)
+      << window.title();
 
   press(SDLK_ESCAPE);
   EXPECT_FALSE(v.step());
@@ -277,23 +299,52 @@ TEST(Viewer, AStillFrameIsAbandonedBetweenTilesWhenInputArrives) {
   EXPECT_EQ(sdfrt::to_rgb8(*full), sdfrt::to_rgb8(scene.render(cam, 300, 150, 0.0)));
 }
 
+// `sdfc view --benchmark` through the real binary: the built-in orbit for a
+// scene without a camera path, the scene's path for examples/flythrough.yaml.
 TEST(Viewer, BenchmarkPrintsFrameStatistics) {
-  std::string out = ::testing::TempDir() + "/viewer_benchmark.txt";
-  std::string cmd = std::string("cd ") + SDFC_SOURCE_DIR + " && " + SDFC_BINARY +
-                    " view examples/primitives.yaml --width 64 --height 36 --benchmark 1 >" + out + " 2>/dev/null";
-  int status = std::system(cmd.c_str());
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 0);
-  std::stringstream ss;
-  ss << std::ifstream(out).rdbuf();
-  std::string text = ss.str();
-  for (const char* field : {"benchmark: 64x36", "frames", "mean", "min", "max", "1% low", "fps"})
-    EXPECT_NE(text.find(field), std::string::npos) << field << " missing in:\n" << text;
-  int frames = 0;
-  auto at = text.find("frames");
-  ASSERT_NE(at, std::string::npos);
-  frames = std::stoi(text.substr(at + 6));
-  EXPECT_GT(frames, 1);
+  struct Case {
+    const char* scene;
+    const char* camera;
+  } cases[] = {{"examples/primitives.yaml", "benchmark: orbiting the target by 360 degrees"},
+               {"examples/flythrough.yaml", "benchmark: playing camera.path (5 keys, 4.00 s"}};
+  for (const Case& c : cases) {
+    std::string out = ::testing::TempDir() + "/viewer_benchmark.txt", err = ::testing::TempDir() + "/viewer_benchmark.err";
+    std::string cmd = std::string("cd ") + SDFC_SOURCE_DIR + " && " + SDFC_BINARY + " view " + c.scene +
+                      " --width 64 --height 36 --benchmark 1 >" + out + " 2>" + err;
+    int status = std::system(cmd.c_str());
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 0) << c.scene;
+    std::stringstream ss, es;
+    ss << std::ifstream(out).rdbuf();
+    es << std::ifstream(err).rdbuf();
+    std::string text = ss.str();
+    EXPECT_NE(es.str().find(c.camera), std::string::npos) << es.str();
+    for (const char* field : {"benchmark: 64x36", "frames", "mean", "min", "max", "1% low", "fps"})
+      EXPECT_NE(text.find(field), std::string::npos) << field << " missing in:\n" << text;
+    auto at = text.find("frames");
+    ASSERT_NE(at, std::string::npos);
+    int frames = std::stoi(text.substr(at + 6));
+    EXPECT_GT(frames, 1) << c.scene;
+  }
+}
+
+// The benchmark moves the camera along the scene's path: its last frame
+// is the path at a later time, not the first key.
+TEST(Viewer, BenchmarkPlaysTheScenesCameraPath) {
+  const std::string scene_path = std::string(SDFC_SOURCE_DIR) + "/examples/flythrough.yaml";
+  SceneSession scene(device(), {scene_path, {}, 16});
+  ASSERT_FALSE(scene.module().plan.camera.path.empty());
+  ViewerOptions opt;
+  opt.width = 64;
+  opt.height = 36;
+  SdlWindow window("sdfc view test", opt.width, opt.height);
+  Viewer v(scene, window, opt);
+  FrameStats st = v.benchmark(1.0);
+  EXPECT_GT(st.frames, 1);
+  const ir::Camera path_camera = scene.module().plan.camera;
+  std::vector<std::uint8_t> first = sdfrt::to_rgb8(scene.render(path_camera, opt.width, opt.height, 0.0));
+  ASSERT_EQ(v.last_image().size(), first.size());
+  EXPECT_NE(v.last_image(), first) << "the camera did not move along the path";
 }
 
 }  // namespace

@@ -43,7 +43,12 @@ SceneSession::Stamp SceneSession::read_stamp() const {
 void SceneSession::compile() {
   SourceValue doc = load_scene_source(options_.path, options_.sets);
   auto m = std::make_unique<ir::Module>(build_module(doc, options_.path));
-  codegen::EmittedKernel k = codegen::emit_opencl(*m, {options_.simd_width, false});
+  // With the AOV planes: the F1 overlay's steps/pixel is the mean of the
+  // kernel's own `steps` plane (no second march). Costs a few stores a pixel.
+  codegen::EmitOptions eo;
+  eo.simd_width = options_.simd_width;
+  eo.aovs = true;
+  codegen::EmittedKernel k = codegen::emit_opencl(*m, eo);
   sdfrt::KernelSpec spec{k.source, k.entry, k.simd_width, k.packet_rows, k.planes, ""};
   auto r = std::make_unique<sdfrt::Renderer>(*device_, spec);
   module_ = std::move(m);

@@ -21,6 +21,15 @@ double seconds_between(unsigned long long a, unsigned long long b) {
   return double(b - a) / double(SDL_GetPerformanceFrequency());
 }
 std::string first_line(const std::string& s) { return s.substr(0, s.find('\n')); }
+
+// Mean of the kernel's `steps` plane: march steps per pixel.
+double mean_steps(const sdfrt::FloatImage& img) {
+  int k = img.plane_index("steps");
+  if (k < 0 || img.plane_size() == 0) return 0;
+  double sum = 0;
+  for (float v : img.plane(k)) sum += v;
+  return sum / double(img.plane_size());
+}
 }  // namespace
 
 Viewer::Viewer(SceneSession& scene, SdlWindow& window, ViewerOptions options)
@@ -136,7 +145,7 @@ void Viewer::render_moving() {
   std::vector<std::uint8_t> rgb = sdfrt::to_rgb8(img);
   show(std::move(rgb), w, h);
   samples_.reset();
-  last_ = {w, h, d, 0, st.total_ms, true};
+  last_ = {w, h, d, 0, st.total_ms, mean_steps(img), true};
   fps_ = st.total_ms > 0 ? 1000.0 / st.total_ms : 0;
 }
 
@@ -166,7 +175,7 @@ void Viewer::render_still() {
   // The first sample is shown as the kernel wrote it: exactly `sdfc render`.
   std::vector<std::uint8_t> rgb = samples_.samples() == 1 ? sdfrt::to_rgb8(*img) : samples_.rgb8();
   show(std::move(rgb), opt_.width, opt_.height);
-  last_ = {opt_.width, opt_.height, 1, samples_.samples(), st.total_ms, true};
+  last_ = {opt_.width, opt_.height, 1, samples_.samples(), st.total_ms, mean_steps(*img), true};
   fps_ = st.total_ms > 0 ? 1000.0 / st.total_ms : 0;
 }
 
@@ -188,6 +197,7 @@ std::vector<std::string> Viewer::overlay_lines() const {
   std::vector<std::string> lines = {
       fmt::format("{:.1f} fps  {:.1f} ms", fps_, last_.ms),
       fmt::format("{}x{}  1/{} res  {} spp", last_.width, last_.height, last_.divisor, last_.samples),
+      fmt::format("{:.1f} steps/pixel", last_.steps),
       fmt::format("{}  speed x{:.3g}", rig_.mode() == CameraMode::Fly ? "fly" : "orbit", rig_.speed())};
   if (!scene_.error().empty()) lines.push_back("error: see title / stderr");
   return lines;
@@ -197,8 +207,8 @@ void Viewer::update_title() {
   std::string name = std::filesystem::path(scene_.options().path).filename().string();
   std::string title = fmt::format("sdfc view: {} [{}]", name, rig_.mode() == CameraMode::Fly ? "fly" : "orbit");
   if (overlay_)
-    title += fmt::format("  {:.1f} fps, {:.1f} ms, {}x{} (1/{} res), {} sample(s)", fps_, last_.ms, last_.width,
-                         last_.height, last_.divisor, last_.samples);
+    title += fmt::format("  {:.1f} fps, {:.1f} ms, {}x{} (1/{} res), {} sample(s), {:.1f} steps/pixel", fps_,
+                         last_.ms, last_.width, last_.height, last_.divisor, last_.samples, last_.steps);
   if (!scene_.error().empty()) title += "  ERROR (old kernel kept): " + first_line(scene_.error());
   window_.set_title(title);
 }
@@ -225,8 +235,16 @@ std::string Viewer::screenshot(const std::string& path) {
 
 FrameStats Viewer::benchmark(double seconds, double orbit_degrees) {
   const ir::Camera start = rig_.camera();
+  // The scene's camera (with its path) is what frame_params animates.
+  const ir::Camera scene_camera = scene_.module().plan.camera;
+  const bool path = !scene_camera.path.empty();
+  const double path_t0 = path ? scene_camera.path.front().time : 0;
+  const double path_length = path ? scene_camera.path.back().time - path_t0 : 0;
+  std::cerr << (path ? fmt::format("benchmark: playing camera.path ({} keys, {:.2f} s{})\n", scene_camera.path.size(),
+                                   path_length, path_length < seconds ? ", looping" : "")
+                     : fmt::format("benchmark: orbiting the target by {} degrees\n", orbit_degrees));
   // Warm-up: the first launch of a shape compiles PoCL's work-group function.
-  scene_.render(start, opt_.width, opt_.height, 0.0);
+  scene_.render(path ? scene_camera : start, opt_.width, opt_.height, path_t0);
   std::vector<double> frame_ms;
   auto t0 = std::chrono::steady_clock::now();
   double elapsed = 0;
@@ -235,8 +253,15 @@ FrameStats Viewer::benchmark(double seconds, double orbit_degrees) {
     while (SDL_PollEvent(&e))
       if (e.type == SDL_QUIT || (e.type == SDL_KEYDOWN && e.key.keysym.sym == SDLK_ESCAPE)) quit_ = true;
     auto f0 = std::chrono::steady_clock::now();
-    rig_.orbit_to(start, orbit_degrees * std::numbers::pi / 180.0 * elapsed / seconds);
-    sdfrt::FloatImage img = scene_.render(rig_.camera(), opt_.width, opt_.height, 0.0);
+    sdfrt::FloatImage img;
+    if (path) {
+      // Path time runs with the clock, as `sdfc render --frames` plays it.
+      const double t = path_t0 + (path_length > 0 ? std::fmod(elapsed, path_length) : 0.0);
+      img = scene_.render(scene_camera, opt_.width, opt_.height, t);
+    } else {
+      rig_.orbit_to(start, orbit_degrees * std::numbers::pi / 180.0 * elapsed / seconds);
+      img = scene_.render(rig_.camera(), opt_.width, opt_.height, 0.0);
+    }
     std::vector<std::uint8_t> rgb = sdfrt::to_rgb8(img);
     show(std::move(rgb), opt_.width, opt_.height);
     auto f1 = std::chrono::steady_clock::now();

@@ -33,6 +33,7 @@ struct FrameInfo {
   int divisor = 1;            // window size / rendered size
   int samples = 0;            // accumulated samples shown (0 while moving)
   double ms = 0;              // render time
+  double steps = 0;           // mean march steps per pixel (the kernel's steps plane)
   bool rendered = false;      // false when the step only waited
 };
 
@@ -56,9 +57,10 @@ class Viewer {
   // C key: the current camera as a scene-file line.
   std::string camera_yaml() const { return viewer::camera_yaml(rig_.camera()); }
 
-  // Plays the built-in orbit around the scene's target (`orbit_degrees` in
-  // `seconds`; 0 keeps the camera still) one full-resolution frame after
-  // another, and returns the frame statistics.
+  // Renders full-resolution frames one after another for `seconds` and
+  // returns the frame statistics. The camera plays the scene's camera.path
+  // when it has one (at its own speed, from its first key, looping), else
+  // orbits the target (`orbit_degrees` in `seconds`; 0 keeps it still).
   FrameStats benchmark(double seconds, double orbit_degrees = 360);
 
   CameraRig& rig() noexcept { return rig_; }
