@@ -29,7 +29,9 @@ class SceneEmitter {
   // trap: emit scene_trap instead, where the tracked value is the orbit
   // trap of the nearest fractal (chosen by the same rules as the material).
   SceneEmitter(const ir::Module& m, const Literals& lit, bool with_mat, std::set<std::string>& used, bool trap = false)
-      : g_(*m.graph), lit_(lit), with_mat_(with_mat || trap), trap_(trap), used_(used), file_(m.source_name) {}
+      : g_(*m.graph), lit_(lit), with_mat_(with_mat || trap), trap_(trap), used_(used), file_(m.source_name) {
+    if (trap) find_iteration_fractals(m, m.root, 0);
+  }
 
   std::string function(NodeId root) {
     w_.line(trap_ ? "real scene_trap(vec3 p)" : with_mat_ ? "real scene_dist_mat(vec3 p, real* mat)" : "real scene_dist(vec3 p)");
@@ -241,10 +243,11 @@ class SceneEmitter {
         if (is_fractal(n)) {
           std::string expr = emit_fractal(n, p, lit_, w_, used_);
           Value v = leaf(n, expr);
-          std::string trap = trap_ ? emit_fractal_trap(n, p, lit_, used_) : "";
+          std::string trap = trap_ ? emit_fractal_trap(n, p, lit_, w_, used_, iteration_.count(id) > 0) : "";
           if (!trap.empty()) {
             v.mat = var("trap");
-            w_.line(fmt::format("real {} = {};  // orbit trap", v.mat, trap));
+            w_.line(fmt::format("real {} = {};  // {}", v.mat, trap,
+                                iteration_.count(id) ? "smooth iteration count (its material's source)" : "orbit trap"));
           }
           return v;
         }
@@ -368,10 +371,22 @@ class SceneEmitter {
     return {d, m};
   }
 
+  // The fractals whose material (the nearest material above them, as for
+  // scene_dist_mat) colours by the smooth iteration count instead of the trap.
+  void find_iteration_fractals(const ir::Module& m, NodeId id, int material) {
+    const ir::Node& n = g_.node(id);
+    if (n.kind == Kind::Material) material = int(n.params[0]);
+    if (is_fractal(n) && material > 0 && size_t(material) < m.plan.materials.size() &&
+        m.plan.materials[size_t(material)].trap_source == ir::MaterialDef::TrapSource::Iteration)
+      iteration_.insert(id);
+    for (NodeId c : n.children) find_iteration_fractals(m, c, material);
+  }
+
   const ir::Graph& g_;
   const Literals& lit_;
   bool with_mat_;
   bool trap_;
+  std::set<NodeId> iteration_;
   std::set<std::string>& used_;
   std::string file_;
   CodeWriter w_;
