@@ -69,18 +69,17 @@ inline real de_mandelbulb_numeric(vec3 p, real power, int ipower, int iterations
     return SEL(de, r0 - set_radius, r0 > 1.5f * set_radius);
 }
 
-//! fn de_mandelbox_jacobian
+//! fn mandelbox_jacobian_orbit
 //! deps: vec3_ops
-//! class: estimate
+//! class: helper
 // Mandelbox with a running 3x3 Jacobian by forward-mode dual numbers (seed
 // 001 part VII): the columns jx, jy, jz are dz/dx, dz/dy, dz/dz. The box
 // fold negates a row where it reflects, the sphere fold scales (inner
 // ball) or applies the inversion's derivative f (J - 2 z (z.J) / r^2), the
 // per-axis scale multiplies rows, and + p adds the identity. Then
-// |grad |z|| = |J^T z| / |z| and d = |z|^2 / |J^T z|. Valid for the
-// non-conformal Mandelbox too, where the scalar derivative overshoots.
-inline real de_mandelbox_jacobian(vec3 p, real scale, real min_r2, real fixed_r2, real folding_limit, int iterations,
-                                  int julia, vec3 c, vec3 axis_scale)
+// grad |z| = J^T z / |z|. Returns z_n; *jtz gets J^T z_n.
+inline vec3 mandelbox_jacobian_orbit(vec3 p, real scale, real min_r2, real fixed_r2, real folding_limit, int iterations,
+                                     int julia, vec3 c, vec3 axis_scale, vec3* jtz)
 {
     vec3 add = julia ? c : p;
     real id = julia ? 0.0f : 1.0f;
@@ -118,6 +117,20 @@ inline real de_mandelbox_jacobian(vec3 p, real scale, real min_r2, real fixed_r2
         jz = v3_select(jz, az, alive);
         alive = alive & (v3_dot(z, z) < 1e4f);
     }
-    real g = v3_length(v3(v3_dot(z, jx), v3_dot(z, jy), v3_dot(z, jz)));
-    return v3_dot(z, z) / fmax(g, K(1e-30f));
+    *jtz = v3(v3_dot(z, jx), v3_dot(z, jy), v3_dot(z, jz));
+    return z;
+}
+
+//! fn de_mandelbox_jacobian
+//! deps: vec3_ops, mandelbox_jacobian_orbit
+//! class: estimate
+// The Mandelbox estimate from the running Jacobian (seed 001 part VII):
+// |grad |z|| = |J^T z| / |z|, so d = |z|^2 / |J^T z|. Valid for the
+// non-conformal Mandelbox too, where the scalar derivative overshoots.
+inline real de_mandelbox_jacobian(vec3 p, real scale, real min_r2, real fixed_r2, real folding_limit, int iterations,
+                                  int julia, vec3 c, vec3 axis_scale)
+{
+    vec3 jtz;
+    vec3 z = mandelbox_jacobian_orbit(p, scale, min_r2, fixed_r2, folding_limit, iterations, julia, c, axis_scale, &jtz);
+    return v3_dot(z, z) / fmax(v3_length(jtz), K(1e-30f));
 }

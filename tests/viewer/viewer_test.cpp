@@ -46,7 +46,7 @@ double offline_mean_steps(const std::string& path, const ir::Camera& camera, int
   eo.simd_width = 16;
   eo.aovs = true;
   codegen::EmittedKernel k = codegen::emit_opencl(m, eo);
-  sdfrt::Renderer r(device(), {k.source, k.entry, k.simd_width, k.planes, ""});
+  sdfrt::Renderer r(device(), {k.source, k.entry, k.simd_width, k.packet_rows, k.planes, ""});
   m.plan.camera = camera;
   sdfrt::FloatImage img = r.render(codegen::frame_params(m.plan, w, h, 0.0), w, h);
   double sum = 0;

@@ -120,33 +120,126 @@ std::string emit_fractal(const ir::Node& n, const std::string& p, const Literals
   }
 }
 
-std::string emit_fractal_trap(const ir::Node& n, const std::string& p, const Literals& lit, std::set<std::string>& used) {
+namespace {
+
+// The hybrid's orbit trap and smooth iteration count, written inline like its
+// estimator: the same step pattern, the trap (smallest |coordinate|) and the
+// steps taken; the fraction past the escape radius follows the growth law of
+// the step that escaped (a power for a Mandelbulb step, linear for a box).
+std::string hybrid_trap(const ir::Node& n, const std::string& p, const Literals& lit, CodeWriter& w,
+                        std::set<std::string>& used, bool iteration) {
+  const auto& q = n.params;
+  int iterations = int(q[0]), steps = int(q[2]), period = 0;
+  for (int s = 0; s < steps; ++s) period += int(q[3 + s * ir::kHybridStepParams + 1]);
+  const std::string escape = lit.real(ir::hybrid_escape_radius(q[1]));
+  std::string out = fmt::format("htrap{}", w.fresh());
+  w.line(fmt::format("real {};  // hybrid orbit {}", out, iteration ? "smooth iteration count" : "trap"));
+  w.open("{");
+  w.line(fmt::format("vec3 z = {};", p));
+  w.line("real dr = 1.0f, trap = 1e10f, n = 0.0f, growth = 2.0f, power_law = 0.0f;");
+  w.line("real r = v3_length(z);");
+  w.line(fmt::format("mask alive = r < {};", escape));
+  w.open(fmt::format("for (int i = 0; i < {} && M_ANY(alive); ++i) {{", iterations));
+  w.line(fmt::format("const int k = i % {};", period));
+  w.line("vec3 z_next;");
+  w.line("real g, law;");
+  int upto = 0;
+  for (int s = 0; s < steps; ++s) {
+    const double* st = &q[3 + s * ir::kHybridStepParams];
+    upto += int(st[1]);
+    std::string cond = s + 1 == steps ? "else" : fmt::format("{}if (k < {})", s ? "else " : "", upto);
+    if (st[0] == double(ir::HybridStep::Mandelbulb)) {
+      used.insert("hybrid_bulb_step");
+      w.line(fmt::format("{} {{ z_next = hybrid_bulb_step(z, {}, {}, &dr); g = {}; law = 1.0f; }}", cond, lit.real(st[2]), p,
+                         lit.real(st[2])));
+    } else {
+      used.insert("hybrid_box_step");
+      w.line(fmt::format("{} {{ z_next = hybrid_box_step(z, {}, {}, {}, {}, {}, &dr); g = {}; law = 0.0f; }}", cond,
+                         lit.real(st[2]), lit.real(st[3] * st[3]), lit.real(st[4] * st[4]), lit.real(st[5]), p,
+                         lit.real(std::fabs(st[2]))));
+    }
+  }
+  w.line("z = v3_select(z, z_next, alive);");
+  w.line("n = SEL(n, n + 1.0f, alive);");
+  w.line("growth = SEL(growth, (real)(g), alive);");
+  w.line("power_law = SEL(power_law, (real)(law), alive);");
+  w.line("trap = SEL(trap, fmin(trap, fmin(fabs(z.x), fmin(fabs(z.y), fabs(z.z)))), alive);");
+  w.line("r = v3_length(z);");
+  w.line(fmt::format("alive = alive & (r < {});", escape));
+  w.close("}");
+  if (iteration) {
+    w.line(fmt::format("real rr = fmax(r, {0}), lR = log({0});", escape));
+    w.line("real frac = SEL(log(rr / " + escape + "), log(log(rr) / lR), power_law > 0.5f);");
+    w.line("frac = clamp(frac / log(fmax(growth, K(1.0001f))), K(0.0f), K(1.0f));");
+    w.line(fmt::format("{} = SEL((real)(1.0f), (n - frac) / {}, r >= {});", out, lit.real(double(iterations)), escape));
+  } else {
+    w.line(fmt::format("{} = trap;", out));
+  }
+  w.close("}");
+  return out;
+}
+
+}  // namespace
+
+std::string emit_fractal_trap(const ir::Node& n, const std::string& p, const Literals& lit, CodeWriter& w,
+                              std::set<std::string>& used, bool iteration) {
   const auto& q = n.params;
   auto r = [&](size_t i) { return lit.real(q[i]); };
-  auto call = [&](const char* fn) {
-    used.insert(fn);
-    return std::string(fn);
-  };
+  if (n.kind == Kind::Hybrid) return hybrid_trap(n, p, lit, w, used, iteration);
+  std::string call;
   switch (n.kind) {
     case Kind::Mandelbulb:
-      if (integer_power(q[0]))  // trig-free, like the distance
-        return fmt::format("{}({}, {}, {}, {}, 0, v3_splat(0.0f))", call("trap_mandelbulb_int"), p, int(q[0]), int(q[1]), r(2));
-      return fmt::format("{}({}, {}, {}, {}, 0, v3_splat(0.0f))", call("trap_mandelbulb"), p, r(0), int(q[1]), r(2));
+      if (integer_power(q[0])) {  // trig-free, like the distance
+        call = fmt::format("trap_mandelbulb_int({}, {}, {}, {}, 0, v3_splat(0.0f)", p, int(q[0]), int(q[1]), r(2));
+        used.insert("trap_mandelbulb_int");
+      } else {
+        call = fmt::format("trap_mandelbulb({}, {}, {}, {}, 0, v3_splat(0.0f)", p, r(0), int(q[1]), r(2));
+        used.insert("trap_mandelbulb");
+      }
+      break;
     case Kind::Juliabulb:
-      if (integer_power(q[0]))
-        return fmt::format("{}({}, {}, {}, {}, 1, {})", call("trap_mandelbulb_int"), p, int(q[0]), int(q[1]), r(2),
+      if (integer_power(q[0])) {
+        call = fmt::format("trap_mandelbulb_int({}, {}, {}, {}, 1, {}", p, int(q[0]), int(q[1]), r(2),
                            lit.vec3({q[3], q[4], q[5]}));
-      return fmt::format("{}({}, {}, {}, {}, 1, {})", call("trap_mandelbulb"), p, r(0), int(q[1]), r(2),
-                         lit.vec3({q[3], q[4], q[5]}));
+        used.insert("trap_mandelbulb_int");
+      } else {
+        call = fmt::format("trap_mandelbulb({}, {}, {}, {}, 1, {}", p, r(0), int(q[1]), r(2), lit.vec3({q[3], q[4], q[5]}));
+        used.insert("trap_mandelbulb");
+      }
+      break;
     case Kind::Mandelbox:
-      return fmt::format("{}({}, {}, {}, {}, {}, {}, {}, {}, {})", call("trap_mandelbox"), p, r(0), lit.real(q[1] * q[1]),
+      call = fmt::format("trap_mandelbox({}, {}, {}, {}, {}, {}, {}, {}, {}", p, r(0), lit.real(q[1] * q[1]),
                          lit.real(q[2] * q[2]), r(3), int(q[4]), int(q[5]), lit.vec3({q[6], q[7], q[8]}),
                          lit.vec3({q[9], q[10], q[11]}));
+      used.insert("trap_mandelbox");
+      break;
     case Kind::QuaternionJulia:
-      return fmt::format("{}({}, {}, {}, {}, {}, {}, {})", call("trap_quaternion_julia"), p, r(6), r(0),
-                         lit.vec3({q[1], q[2], q[3]}), int(q[4]), int(q[5]), r(7));
+      call = fmt::format("trap_quaternion_julia({}, {}, {}, {}, {}, {}, {}", p, r(6), r(0), lit.vec3({q[1], q[2], q[3]}),
+                         int(q[4]), int(q[5]), r(7));
+      used.insert("trap_quaternion_julia");
+      break;
+    case Kind::Menger:
+      call = fmt::format("trap_menger({}, {}, {}", p, int(q[0]), r(1));
+      used.insert("trap_menger");
+      break;
+    case Kind::Sierpinski:
+      call = fmt::format("trap_sierpinski({}, {}, {}", p, int(q[0]), r(1));
+      used.insert("trap_sierpinski");
+      break;
+    case Kind::Kifs: {
+      auto row = [&](size_t i) { return lit.vec3({q[i], q[i + 1], q[i + 2]}); };
+      call = fmt::format("trap_kifs({}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}", p, int(q[0]), r(1),
+                         lit.vec3({q[2], q[3], q[4]}), int(q[5]), row(6), row(9), row(12), row(15), row(18), row(21));
+      used.insert("trap_kifs");
+      break;
+    }
     default: return "";
   }
+  // Both values come from one orbit; the material's source picks one.
+  std::string t = fmt::format("otrap{}", w.fresh()), it = fmt::format("oiter{}", w.fresh());
+  w.line(fmt::format("real {};", it));
+  w.line(fmt::format("real {} = {}, &{});", t, call, it));
+  return iteration ? it : t;
 }
 
 }  // namespace sdfc::codegen::detail

@@ -17,8 +17,10 @@ bool is_fractal(const ir::Node& n);
 std::string emit_fractal(const ir::Node& n, const std::string& p, const Literals& lit, CodeWriter& w,
                          std::set<std::string>& used);
 
-// The orbit-trap value of the node at `p` (evaluated once per hit), or ""
-// for kinds without one (the fold fractals, the hybrid).
-std::string emit_fractal_trap(const ir::Node& n, const std::string& p, const Literals& lit, std::set<std::string>& used);
+// The node's colour value at `p` (evaluated once per hit): its orbit trap,
+// or with `iteration` its smooth iteration count in [0, 1]. Writes any
+// statements it needs to `w`; "" for kinds without one.
+std::string emit_fractal_trap(const ir::Node& n, const std::string& p, const Literals& lit, CodeWriter& w,
+                              std::set<std::string>& used, bool iteration);
 
 }  // namespace sdfc::codegen::detail

@@ -60,7 +60,9 @@ class SceneEmitter {
         trap_(trap),
         blend_(blend),
         used_(used),
-        file_(m.source_name) {}
+        file_(m.source_name) {
+    if (trap || blend) find_iteration_fractals(m, m.root, 0);
+  }
 
   std::string function(NodeId root) {
     if (blend_) {
@@ -133,7 +135,8 @@ class SceneEmitter {
     if (traps) {
       trap = lit_.typed(0);
       if (!md.trap_palette.empty() && is_fractal(n)) {
-        std::string t = emit_fractal_trap(n, leaf_p_, lit_, used_);
+        const bool iteration = md.trap_source == ir::MaterialDef::TrapSource::Iteration;
+        std::string t = emit_fractal_trap(n, leaf_p_, lit_, w_, used_, iteration);
         if (!t.empty()) trap = t;
       }
       trap = ", " + trap;
@@ -317,10 +320,11 @@ class SceneEmitter {
         if (is_fractal(n)) {
           std::string expr = emit_fractal(n, p, lit_, w_, used_);
           Value v = leaf(n, expr);
-          std::string trap = trap_ ? emit_fractal_trap(n, p, lit_, used_) : "";
+          std::string trap = trap_ ? emit_fractal_trap(n, p, lit_, w_, used_, iteration_.count(id) > 0) : "";
           if (!trap.empty()) {
             v.mat = var("trap");
-            w_.line(fmt::format("real {} = {};  // orbit trap", v.mat, trap));
+            w_.line(fmt::format("real {} = {};  // {}", v.mat, trap,
+                                iteration_.count(id) ? "smooth iteration count (its material's source)" : "orbit trap"));
           }
           return v;
         }
@@ -470,6 +474,17 @@ class SceneEmitter {
     return {d, m, rec};
   }
 
+  // The fractals whose material (the nearest material above them, as for
+  // scene_dist_mat) colours by the smooth iteration count instead of the trap.
+  void find_iteration_fractals(const ir::Module& m, NodeId id, int material) {
+    const ir::Node& n = g_.node(id);
+    if (n.kind == Kind::Material) material = int(n.params[0]);
+    if (is_fractal(n) && material > 0 && size_t(material) < m.plan.materials.size() &&
+        m.plan.materials[size_t(material)].trap_source == ir::MaterialDef::TrapSource::Iteration)
+      iteration_.insert(id);
+    for (NodeId c : n.children) find_iteration_fractals(m, c, material);
+  }
+
   const ir::Graph& g_;
   const ir::RenderPlan& plan_;
   const Literals& lit_;
@@ -478,6 +493,7 @@ class SceneEmitter {
   bool blend_;
   double cur_mat_ = 0;  // scene_material: the material of the nearest material node above
   std::string leaf_p_;
+  std::set<NodeId> iteration_;
   std::set<std::string>& used_;
   std::string file_;
   CodeWriter w_;

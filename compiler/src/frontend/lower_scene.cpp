@@ -178,11 +178,19 @@ void read_lights(ValueReader& r, const SourceValue& v, ir::RenderPlan& plan) {
   }
 }
 
-// orbit_trap: {palette: [[r, g, b], ...], mix: 0.7}: 2 to 16 colours.
+// orbit_trap: {palette: [[r, g, b], ...], mix: 0.7, source: trap}: 2 to 16
+// colours; source `trap` (the orbit trap) or `iteration` (the smooth
+// iteration count).
 void read_orbit_trap(ValueReader& r, const SourceValue& v, ir::MaterialDef& md) {
   std::string what = "material '" + md.name + "'.orbit_trap";
-  MapReader m(r, v, what, {"palette", "mix"});
+  MapReader m(r, v, what, {"palette", "mix", "source"});
   md.trap_mix = m.number("mix", 0.7, Range::closed(0, 1));
+  if (const SourceValue* s = m.get("source")) {
+    if (s->is_scalar() && s->scalar == "iteration") md.trap_source = ir::MaterialDef::TrapSource::Iteration;
+    else if (!s->is_scalar() || s->scalar != "trap")
+      r.sink().error(s->loc, what + ".source: expected 'trap' or 'iteration'",
+                     s->is_scalar() ? did_you_mean(s->scalar, {"trap", "iteration"}) : "");
+  }
   const SourceValue* p = m.require("palette");
   if (!p) return;
   if (!p->is_seq() || p->items.size() < 2 || p->items.size() > 16) {

@@ -23,13 +23,21 @@ inline bool supports_dual_normals(Kind k) {
     case Kind::SmoothIntersection:
     case Kind::SmoothDifference:
     case Kind::Material:
-    case Kind::StepFactor: return true;
+    case Kind::StepFactor:
+    // Fractals with a running Jacobian: the normal is the direction of
+    // grad |z_n| (forward-mode dual numbers through the orbit).
+    case Kind::Mandelbulb:
+    case Kind::Juliabulb:
+    case Kind::Mandelbox:
+    case Kind::QuaternionJulia:
+    case Kind::Bounded: return true;
     default: return false;
   }
 }
 
 inline const char* dual_normal_kinds() {
-  return "sphere, box, torus, plane, cylinder, capsule and the combinators and modifiers";
+  return "sphere, box, torus, plane, cylinder, capsule, mandelbulb (and its julia form), mandelbox, julia and the "
+         "combinators and modifiers";
 }
 
 }  // namespace sdfc::ir

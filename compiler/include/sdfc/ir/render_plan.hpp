@@ -107,6 +107,9 @@ struct MaterialDef {
   // colour from the palette, mixed into `color` by trap_mix. Empty: none.
   std::vector<Vec3d> trap_palette;
   double trap_mix = 0.0;
+  // What walks the palette: the orbit trap, or the smooth iteration count
+  // (`orbit_trap.source: iteration`).
+  enum class TrapSource { Trap, Iteration } trap_source = TrapSource::Trap;
   double reflectivity = 0;  // reflectance at normal incidence (Fresnel-Schlick R0)
   SourceLoc loc;
 };

@@ -3,6 +3,7 @@
 // independently of the OpenCL stdlib. Tests compare every OpenCL evaluator
 // against it.
 #include <array>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -33,5 +34,15 @@ struct Look {
   int material;  // the nearest material, as evaluate() gives it
 };
 Look evaluate_material(const ir::Module& m, const Vec3& p);
+
+// A fractal node's colour values at p (in the node's own frame): its orbit
+// trap (smallest |coordinate| along the orbit) and its smooth iteration
+// count in [0, 1] (1: never escaped; the fold fractals never do). Empty for
+// other kinds.
+struct OrbitColour {
+  double trap;
+  double iteration;
+};
+std::optional<OrbitColour> orbit_colour(const ir::Node& fractal, const Vec3& p);
 
 }  // namespace sdfc::reference
