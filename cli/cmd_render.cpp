@@ -198,7 +198,7 @@ Action add_render(CLI::App& app) {
   cmd->add_option("--fps", a->fps, "Frames per second for --frames (default 30)")->check(CLI::Range(0.001, 10000.0));
   cmd->add_option("--kernel", a->kernel_file,
                   "Build this OpenCL file instead of the generated kernel (a hand-edited 'sdfc compile' output "
-                  "for the same scene and --simd-width)");
+                  "for the same scene, --simd-width and --packet-rows)");
   return [a] { return run_render(*a); };
 }
 
