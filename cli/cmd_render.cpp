@@ -214,7 +214,7 @@ Action add_render(CLI::App& app) {
   cmd->add_option("--fps", a->fps, "Frames per second for --frames (default 30)")->check(CLI::Range(0.001, 10000.0));
   cmd->add_option("--kernel", a->kernel_file,
                   "Build this OpenCL file instead of the generated kernel (a hand-edited 'sdfc compile' output "
-                  "for the same scene and --simd-width)");
+                  "for the same scene, --simd-width and --packet-rows)");
   cmd->add_flag("--reference", a->reference,
                 "Reference render of the same view: double precision, hit epsilon 1e-6 px, 20000 steps, step factor "
                 "0.5, bisection of every hit, central normals; writes the depth, normal and hit AOVs (slow)");

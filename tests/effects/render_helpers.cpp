@@ -16,10 +16,11 @@ sdfrt::Device& device() {
 
 ir::Module compile_text(const std::string& scene) { return passes::run_pipeline(lower_text(scene)); }
 
-Rendered render_text(const std::string& scene, int simd_width, int tile) {
+Rendered render_text(const std::string& scene, int simd_width, int tile, int packet_rows) {
   Rendered r{compile_text(scene), {}};
   codegen::EmitOptions opt;
   opt.simd_width = simd_width;
+  opt.packet_rows = packet_rows;
   opt.aovs = true;
   codegen::EmittedKernel k = codegen::emit_opencl(r.module, opt);
   sdfrt::Renderer renderer(device(), {k.source, k.entry, k.simd_width, k.packet_rows, k.planes, ""});

@@ -56,6 +56,7 @@ TEST(ImageMetrics, IdenticalRendersHaveNoError) {
   EXPECT_EQ(m.depth_rel_error_p99, 0);
   EXPECT_NEAR(m.normal_error_deg_p99, 0, 0.05);  // float normals, re-normalised by nobody
   EXPECT_TRUE(std::isinf(m.psnr_db));
+  EXPECT_EQ(m.pixels_differing_pct, 0);
   EXPECT_DOUBLE_EQ(m.ssim, 1.0);
   EXPECT_NE(format_json(m).find("\"psnr_db\": null"), std::string::npos);
 }
@@ -85,6 +86,8 @@ TEST(ImageMetrics, KnownErrorsAreMeasured) {
   EXPECT_NEAR(m.depth_rel_error_p99, 1e-3, 1e-6);
   EXPECT_NEAR(m.normal_error_deg_median, 2.0, 0.01);
   EXPECT_NEAR(m.psnr_db, 10 * std::log10(1 / 0.04), 0.05);  // MSE = 0.2^2 (blue and all in range)
+  EXPECT_NEAR(m.pixels_differing_pct, 100, 1e-9);  // every pixel is 51 levels off, more than 4
+  EXPECT_EQ(compare_renders(load_render_outputs(ref), load_render_outputs(test), 52 / 255.0).pixels_differing_pct, 0);
   EXPECT_LT(m.ssim, 1.0);
   EXPECT_GT(m.ssim, 0.5);  // a brightness shift keeps the structure
 }
