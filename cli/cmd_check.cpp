@@ -49,6 +49,7 @@ int run_check(const SceneArgs& args) {
     }
     std::string de = ir::de_summary(n);  // fractals: the estimator and what it promises
     if (!de.empty()) note += "  " + de;
+    if (n.kind == ir::Kind::StepFactor) note += fmt::format("  factor {:.3g}", n.params[0]);
     fmt::print("  {:<20} {:<9} L = {:<6.4g} {}{}\n", ir::info(n.kind).name, ir::to_string(n.props.cls), n.props.lipschitz,
                at, note);
   }

@@ -144,11 +144,10 @@ double mandelbox_jacobian(const Vec3& p, const std::vector<double>& q) {
       for (int b = 0; b < 3; ++b) J[a * 3 + b] = m * J[a * 3 + b] + (!julia && a == b ? 1 : 0);
     }
   }
-  // grad |z| = J^T z / |z|; d = |z| / |grad |z||.
-  Vec3 g{};
-  for (int b = 0; b < 3; ++b)
-    for (int a = 0; a < 3; ++a) g[b] += J[a * 3 + b] * z[a];
-  return dot(z, z) / std::max(len(g), 1e-30);
+  // d = |z| / ||J||, with the Frobenius norm (>= the induced norm).
+  double f2 = 0;
+  for (double v : J) f2 += v * v;
+  return len(z) / std::max(std::sqrt(f2), 1e-30);
 }
 
 double mandelbulb_numeric(const Vec3& p, const std::vector<double>& q) {
