@@ -5,6 +5,8 @@
 
 #include <string>
 
+#include "sdfc/expr/expr.hpp"
+#include "sdfc/ir/graph.hpp"
 #include "sdfc/ir/render_plan.hpp"
 
 namespace sdfc::codegen::detail {
@@ -25,6 +27,22 @@ class Literals {
  private:
   ir::Precision p_;
 };
+
+// Parameter i of a node: a literal, or for an animated parameter its
+// expression of `time` (a scalar the scene functions receive).
+inline std::string param(const ir::Node& n, size_t i, const Literals& lit) {
+  const expr::ExprPtr& e = n.animation(i);
+  if (!e) return lit.real(n.params[i]);
+  return expr::to_opencl(
+      e, [](std::string_view) { return std::string("time"); }, [&](double x) { return lit.real(x); });
+}
+
+// Parameters i, i+1, i+2 as a vec3.
+inline std::string param3(const ir::Node& n, size_t i, const Literals& lit) {
+  if (!n.animation(i) && !n.animation(i + 1) && !n.animation(i + 2))
+    return lit.vec3({n.params[i], n.params[i + 1], n.params[i + 2]});
+  return "v3(" + param(n, i, lit) + ", " + param(n, i + 1, lit) + ", " + param(n, i + 2, lit) + ")";
+}
 
 class CodeWriter {
  public:

@@ -35,7 +35,7 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
   for (const auto& l : m.plan.lights) any_shadows |= l.shadows != ir::Light::Shadows::None;
   CodeWriter w;
   w.line("// ---- one ray segment: march, then shade the hit or the background ----");
-  w.line(fmt::format("vec3 sdfc_segment(vec3 ro, vec3 rd, mask active, real pixel_angle, real jitter,{}",
+  w.line(fmt::format("vec3 sdfc_segment(TIME_PARAM vec3 ro, vec3 rd, mask active, real pixel_angle, real jitter,{}",
                      fx.glow.enabled ? " real glow_weight," : ""));
   w.line("                  real* t_out, mask* hit_out, vec3* n_out, real* mat_out, real* steps_out)");
   w.open("{");
@@ -57,7 +57,7 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
   }
   if (s.dither) {
     w.line("// render.dither: a random fraction of the first step against banding");
-    w.line(fmt::format("t0 = t0 + jitter * {} * fmax(scene_dist(v3_mad(ro, rd, t0)), K(0.0f));", lit.real(s.step_factor)));
+    w.line(fmt::format("t0 = t0 + jitter * {} * fmax(scene_dist(TIME_ARG v3_mad(ro, rd, t0)), K(0.0f));", lit.real(s.step_factor)));
   } else {
     w.line("(void)jitter;");
   }
@@ -65,11 +65,11 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
   if (fx.glow.enabled) {
     used.insert("march_sphere_trace_closest");
     w.line("real closest;");
-    w.line(fmt::format("mask hit = march_sphere_trace_closest(ro, rd, t0, t1, active, pixel_angle, {}, {}, {}, &t, &steps, &closest);",
+    w.line(fmt::format("mask hit = march_sphere_trace_closest(TIME_ARG ro, rd, t0, t1, active, pixel_angle, {}, {}, {}, &t, &steps, &closest);",
                        lit.real(s.hit_epsilon), lit.real(s.step_factor), s.max_steps));
   } else {
     used.insert("march_sphere_trace");
-    w.line(fmt::format("mask hit = march_sphere_trace(ro, rd, t0, t1, active, pixel_angle, {}, {}, {}, &t, &steps);",
+    w.line(fmt::format("mask hit = march_sphere_trace(TIME_ARG ro, rd, t0, t1, active, pixel_angle, {}, {}, {}, &t, &steps);",
                        lit.real(s.hit_epsilon), lit.real(s.step_factor), s.max_steps));
   }
   used.insert("shade_background");
@@ -87,16 +87,16 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
   } else {
     const char* normal_fn = s.normals == ir::NormalMethod::Central ? "normal_central" : "normal_tetrahedral";
     used.insert(normal_fn);
-    w.line(fmt::format("n = {}(pos, h);", normal_fn));
+    w.line(fmt::format("n = {}(TIME_ARG pos, h);", normal_fn));
   }
   w.line("real id;");
-  w.line("(void)scene_dist_mat(pos, &id);");
+  w.line("(void)scene_dist_mat(TIME_ARG pos, &id);");
   w.line("mat = SEL(mat, id, hit);");
   bool traps = false;
   for (const auto& md : m.plan.materials) traps = traps || !md.trap_palette.empty();
   std::string extra;
   if (traps) {
-    w.line("real trap = scene_trap(pos);  // orbit-trap colour, once per hit");
+    w.line("real trap = scene_trap(TIME_ARG pos);  // orbit-trap colour, once per hit");
     extra += ", trap";
   }
   if (fx.ambient_occlusion.enabled) {
@@ -104,7 +104,7 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
     if (ao.method == ir::AmbientOcclusion::Method::NormalSamples) {
       used.insert("ao_normal_samples");
       w.line(fmt::format("// effects.ambient_occlusion: {} probes along the normal", ao.samples));
-      w.line(fmt::format("real occlusion = ao_normal_samples(pos, n, {}, {}, {});", ao.samples, lit.real(ao.distance),
+      w.line(fmt::format("real occlusion = ao_normal_samples(TIME_ARG pos, n, {}, {}, {});", ao.samples, lit.real(ao.distance),
                          lit.real(ao.strength)));
     } else {
       used.insert("ao_step_count");
@@ -115,7 +115,7 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
   }
   if (any_shadows) extra += ", h";
   if (!any_shadows) w.line("(void)h;");
-  w.line(fmt::format("vec3 lit = shade_surface(pos, n, v3_scale(rd, -1.0f), id{});", extra));
+  w.line(fmt::format("vec3 lit = shade_surface(TIME_ARG pos, n, v3_scale(rd, -1.0f), id{});", extra));
   w.line("color = v3_select(color, lit, hit);");
   w.close("}");
   if (fx.glow.enabled) {
@@ -154,12 +154,12 @@ std::string radiance_function(const ir::Module& m, std::set<std::string>& used) 
   const bool glow = m.plan.effects.glow.enabled;
   CodeWriter w;
   w.line("// ---- the colour along one camera ray; the AOVs of its first hit ----");
-  w.line("vec3 sdfc_radiance(vec3 ro, vec3 rd, real pixel_angle, real jitter,");
+  w.line("vec3 sdfc_radiance(TIME_PARAM vec3 ro, vec3 rd, real pixel_angle, real jitter,");
   w.line("                   real* depth, vec3* normal, real* mat, real* steps)");
   w.open("{");
   w.line("real t;");
   w.line("mask hit;");
-  w.line(fmt::format("vec3 color = sdfc_segment(ro, rd, M_TRUE, pixel_angle, jitter,{} &t, &hit, normal, mat, steps);",
+  w.line(fmt::format("vec3 color = sdfc_segment(TIME_ARG ro, rd, M_TRUE, pixel_angle, jitter,{} &t, &hit, normal, mat, steps);",
                      glow ? " 1.0f," : ""));
   w.line("*depth = SEL((real)(-1.0f), t, hit);  // -1 marks a miss");
   if (depth > 0) {
@@ -183,7 +183,7 @@ std::string radiance_function(const ir::Module& m, std::set<std::string>& used) 
     w.line("ro = v3_mad(p, n, 2.0f * footprint);");
     w.line("rd = v3_normalize(v3_mad(rd, n, -2.0f * v3_dot(rd, n)));");
     w.line("real s;");
-    w.line(fmt::format("seg = sdfc_segment(ro, rd, alive, pixel_angle, (real)(0.0f),{} &t, &hit, &n, &id, &s);",
+    w.line(fmt::format("seg = sdfc_segment(TIME_ARG ro, rd, alive, pixel_angle, (real)(0.0f),{} &t, &hit, &n, &id, &s);",
                        glow ? " 0.0f," : ""));
     w.line("alive = alive & hit;");
     w.close("}");
@@ -214,6 +214,7 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
   w.line("vec3 eye = FRAME3(0), forward = FRAME3(6), right = FRAME3(12), up = FRAME3(18);");
   w.line("#undef FRAME3");
   w.line("const scalar pixel_angle = (scalar)frame[24];");
+  if (m.graph->animated(m.root)) w.line("const scalar time = (scalar)frame[25];  // the scene is animated");
   w.line("real depth, mat, steps;");
   w.line("vec3 normal;");
   std::string post;  // per-sample exposure and tone curve
@@ -249,7 +250,7 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
     } else {
       w.line("real jitter = 0.0f;");
     }
-    w.line("vec3 c = sdfc_radiance(eye, rd, pixel_angle, jitter, &depth, &normal, &mat, &steps);");
+    w.line("vec3 c = sdfc_radiance(TIME_ARG eye, rd, pixel_angle, jitter, &depth, &normal, &mat, &steps);");
     emit_post();
     w.line("vec3 color = c;");
   } else {
@@ -294,7 +295,7 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
     }
     w.line("real d_s, mat_s, steps_s;");
     w.line("vec3 n_s;");
-    w.line("vec3 c = sdfc_radiance(ro, rd, pixel_angle, jitter, &d_s, &n_s, &mat_s, &steps_s);");
+    w.line("vec3 c = sdfc_radiance(TIME_ARG ro, rd, pixel_angle, jitter, &d_s, &n_s, &mat_s, &steps_s);");
     emit_post();
     w.line("color = v3_add(color, c);");
     w.line("// the AOVs come from the first sample of the pass");
@@ -325,16 +326,17 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
   return w.take();
 }
 
-std::string probe_kernel() {
-  return R"(// ---- probe: the scene distance at given points (tests and tools) ----
+std::string probe_kernel(bool animated) {
+  return std::string(R"(// ---- probe: the scene distance at given points and time (tests and tools) ----
 __kernel void sdfc_probe(__global const float* px, __global const float* py, __global const float* pz,
-                         __global float* out_d, __global float* out_d_mat, __global float* out_mat)
+                         __global float* out_d, __global float* out_d_mat, __global float* out_mat,
+                         const float probe_time)
 {
     const int i = get_global_id(0) * SDFC_WIDTH;
     vec3 p = v3(LOAD_REAL(px + i), LOAD_REAL(py + i), LOAD_REAL(pz + i));
-    real mat;
-    STORE_REAL(scene_dist(p), out_d + i);
-    STORE_REAL(scene_dist_mat(p, &mat), out_d_mat + i);
+)") + (animated ? "    const scalar time = (scalar)probe_time;\n" : "    (void)probe_time;\n") + R"(    real mat;
+    STORE_REAL(scene_dist(TIME_ARG p), out_d + i);
+    STORE_REAL(scene_dist_mat(TIME_ARG p, &mat), out_d_mat + i);
     STORE_REAL(mat, out_mat + i);
 }
 )";
@@ -355,7 +357,7 @@ EmittedKernel emit_opencl(const ir::Module& m, const EmitOptions& opt) {
   std::string shading = detail::emit_shading(m.plan, lit, used);
   std::string kernel = segment_function(m, lit, used) + "\n" + radiance_function(m, used) + "\n" +
                        render_kernel(m, lit, used, opt.aovs);
-  if (opt.probe_kernel) kernel += "\n" + probe_kernel();
+  if (opt.probe_kernel) kernel += "\n" + probe_kernel(m.graph->animated(m.root));
 
   auto fns = StdlibManifest::instance().closure({used.begin(), used.end()});
   EmittedKernel k;
@@ -375,7 +377,7 @@ EmittedKernel emit_opencl(const ir::Module& m, const EmitOptions& opt) {
                      m.plan.march.precision == ir::Precision::Float ? "float" : "double", wd, ir::count_nodes(m));
   src += "// stdlib functions:";
   for (const auto& n : k.stdlib_functions) src += " " + n;
-  src += "\n\n" + detail::prelude(wd, m.plan.march.precision);
+  src += "\n\n" + detail::prelude(wd, m.plan.march.precision, m.graph->animated(m.root));
   src += "\n// ---- stdlib ----" + before + "\n";
   src += scene + "\n";
   if (!after.empty()) src += "// ---- stdlib that calls the scene ----" + after + "\n";

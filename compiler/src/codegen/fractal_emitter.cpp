@@ -75,7 +75,7 @@ bool is_fractal(const ir::Node& n) { return ir::info(n.kind).category == ir::Cat
 std::string emit_fractal(const ir::Node& n, const std::string& p, const Literals& lit, CodeWriter& w,
                          std::set<std::string>& used) {
   const auto& q = n.params;
-  auto r = [&](size_t i) { return lit.real(q[i]); };
+  auto r = [&](size_t i) { return param(n, i, lit); };
   auto call = [&](const char* fn) {
     used.insert(fn);
     return std::string(fn);
@@ -83,7 +83,13 @@ std::string emit_fractal(const ir::Node& n, const std::string& p, const Literals
   switch (n.kind) {
     case Kind::Mandelbulb: {
       std::string radius = lit.real(ir::mandelbulb_set_radius(q[0]));
-      int ipower = integer_power(q[0]) ? int(q[0]) : 0;  // > 0: the trig-free power
+      // An animated power takes the trig formula (the trig-free one is
+      // specialised to one whole power) and the radius of its set per frame,
+      // as ir::mandelbulb_set_radius computes it.
+      if (n.animation(0))
+        radius = fmt::format("({0} <= {1} ? {2} : fmin({2}, pow({3}, {4} / ({0} - {4}))))", r(0), lit.real(1.25),
+                             lit.real(4.0), lit.real(2.0), lit.real(1.0));
+      int ipower = integer_power(q[0]) && !n.animation(0) ? int(q[0]) : 0;  // > 0: the trig-free power
       auto method = ir::DeMethod(int(q[3]));
       if (method != ir::DeMethod::Analytic)
         return fmt::format("{}({}, {}, {}, {}, {}, {}, {})  /* de: {} */", call("de_mandelbulb_numeric"), p, r(0),
@@ -128,7 +134,7 @@ std::string emit_fractal(const ir::Node& n, const std::string& p, const Literals
 
 std::string emit_fractal_trap(const ir::Node& n, const std::string& p, const Literals& lit, std::set<std::string>& used) {
   const auto& q = n.params;
-  auto r = [&](size_t i) { return lit.real(q[i]); };
+  auto r = [&](size_t i) { return param(n, i, lit); };
   auto call = [&](const char* fn) {
     used.insert(fn);
     return std::string(fn);

@@ -4,5 +4,7 @@
 #include "sdfc/ir/render_plan.hpp"
 
 namespace sdfc::codegen::detail {
-std::string prelude(int width, ir::Precision precision);
+// animated: the scene uses time, which then reaches every function that
+// evaluates the scene as a first argument (TIME_PARAM / TIME_ARG).
+std::string prelude(int width, ir::Precision precision, bool animated);
 }

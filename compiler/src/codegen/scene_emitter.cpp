@@ -32,7 +32,7 @@ class SceneEmitter {
       : g_(*m.graph), lit_(lit), with_mat_(with_mat || trap), trap_(trap), used_(used), file_(m.source_name) {}
 
   std::string function(NodeId root) {
-    w_.line(trap_ ? "real scene_trap(vec3 p)" : with_mat_ ? "real scene_dist_mat(vec3 p, real* mat)" : "real scene_dist(vec3 p)");
+    w_.line(trap_ ? "real scene_trap(TIME_PARAM vec3 p)" : with_mat_ ? "real scene_dist_mat(TIME_PARAM vec3 p, real* mat)" : "real scene_dist(TIME_PARAM vec3 p)");
     w_.open("{");
     Value v = emit(root, "p");
     if (trap_) {
@@ -59,8 +59,11 @@ class SceneEmitter {
   std::string describe(const ir::Node& n) const {
     const ir::KindInfo& k = ir::info(n.kind);
     std::string s(k.name);
-    for (size_t i = 0; i < n.params.size() && n.kind != Kind::Rotate; ++i)
-      s += fmt::format(" {}={}", k.params[i], n.params[i]);
+    for (size_t i = 0; i < n.params.size() && n.kind != Kind::Rotate; ++i) {
+      if (const auto& e = n.animation(i)) s += fmt::format(" {}=\"{}\"", k.params[i], expr::to_string(e));
+      else s += fmt::format(" {}={}", k.params[i], n.params[i]);
+    }
+    if (n.kind == Kind::Rotate && n.animated()) s += " (animated)";
     return s + where(n);
   }
 
@@ -106,21 +109,21 @@ class SceneEmitter {
   Value emit_node(NodeId id, const std::string& p) {
     const ir::Node& n = g_.node(id);
     const auto& q = n.params;
-    auto r = [&](size_t i) { return lit_.real(q[i]); };
+    auto r = [&](size_t i) { return param(n, i, lit_); };
+    auto v = [&](size_t i) { return param3(n, i, lit_); };
     switch (n.kind) {
       case Kind::Sphere: return leaf(n, fmt::format("{}({}, {})", call("sd_sphere"), p, r(0)));
       case Kind::Box:
-        return leaf(n, fmt::format("{}({}, {}, {})", call("sd_box"), p, lit_.vec3({q[0], q[1], q[2]}), r(3)));
+        return leaf(n, fmt::format("{}({}, {}, {})", call("sd_box"), p, v(0), r(3)));
       case Kind::Torus: return leaf(n, fmt::format("{}({}, {}, {})", call("sd_torus"), p, r(0), r(1)));
       case Kind::Plane:
-        return leaf(n, fmt::format("{}({}, {}, {})", call("sd_plane"), p, lit_.vec3({q[0], q[1], q[2]}), r(3)));
+        return leaf(n, fmt::format("{}({}, {}, {})", call("sd_plane"), p, v(0), r(3)));
       case Kind::Cylinder: return leaf(n, fmt::format("{}({}, {}, {})", call("sd_cylinder"), p, r(0), r(1)));
       case Kind::Capsule:
-        return leaf(n, fmt::format("{}({}, {}, {}, {})", call("sd_capsule"), p, lit_.vec3({q[0], q[1], q[2]}),
-                                   lit_.vec3({q[3], q[4], q[5]}), r(6)));
+        return leaf(n, fmt::format("{}({}, {}, {}, {})", call("sd_capsule"), p, v(0), v(3), r(6)));
       case Kind::Translate: {
         std::string p2 = var("p");
-        w_.line(fmt::format("vec3 {} = v3_sub({}, {});  // {}", p2, p, lit_.vec3({q[0], q[1], q[2]}), describe(n)));
+        w_.line(fmt::format("vec3 {} = v3_sub({}, {});  // {}", p2, p, v(0), describe(n)));
         return emit(n.children[0], p2);
       }
       case Kind::Rotate: {
@@ -132,7 +135,8 @@ class SceneEmitter {
       }
       case Kind::Scale: {
         std::string p2 = var("p");
-        w_.line(fmt::format("vec3 {} = v3_scale({}, {});  // {}", p2, p, lit_.real(1.0 / q[0]), describe(n)));
+        std::string inv = n.animated() ? fmt::format("{} / {}", lit_.real(1.0), r(0)) : lit_.real(1.0 / q[0]);
+        w_.line(fmt::format("vec3 {} = v3_scale({}, {});  // {}", p2, p, inv, describe(n)));
         Value c = emit(n.children[0], p2);
         std::string d = var("d");
         w_.line(fmt::format("real {} = {} * {};  // undo the scale on the distance", d, c.d, r(0)));
@@ -231,7 +235,8 @@ class SceneEmitter {
         Value c = emit(n.children[0], p);
         const expr::ExprPtr& e = g_.expressions.at(size_t(q[0]));
         std::string body = expr::to_opencl(
-            e, [&](std::string_view v) { return p + "." + std::string(v); }, [&](double x) { return lit_.typed(x); });
+            e, [&](std::string_view var) { return var == "time" ? std::string("time") : p + "." + std::string(var); },
+            [&](double x) { return lit_.typed(x); });
         std::string d = var("d");
         w_.line(fmt::format("real {} = {} + {};  // displace {}{}", d, c.d, body, expr::to_string(e), where(n)));
         return {d, c.mat};
@@ -271,7 +276,7 @@ class SceneEmitter {
           break;
         case Kind::SmoothUnion:
           if (track) w_.line(fmt::format("{} = SEL({}, {}, {} < {});", m, m, k.mat, k.d, d));
-          w_.line(fmt::format("{} = {}({}, {}, {});", d, call("op_smooth_union"), d, k.d, lit_.real(n.params[0])));
+          w_.line(fmt::format("{} = {}({}, {}, {});", d, call("op_smooth_union"), d, k.d, param(n, 0, lit_)));
           break;
         case Kind::Intersection:
           if (track) w_.line(fmt::format("{} = SEL({}, {}, {} > {});", m, m, k.mat, k.d, d));
@@ -279,13 +284,13 @@ class SceneEmitter {
           break;
         case Kind::SmoothIntersection:
           if (track) w_.line(fmt::format("{} = SEL({}, {}, {} > {});", m, m, k.mat, k.d, d));
-          w_.line(fmt::format("{} = {}({}, {}, {});", d, call("op_smooth_intersection"), d, k.d, lit_.real(n.params[0])));
+          w_.line(fmt::format("{} = {}({}, {}, {});", d, call("op_smooth_intersection"), d, k.d, param(n, 0, lit_)));
           break;
         case Kind::Difference:  // the cut face keeps the first child's material
           w_.line(fmt::format("{} = fmax({}, -{});", d, d, k.d));
           break;
         case Kind::SmoothDifference:
-          w_.line(fmt::format("{} = {}({}, {}, {});", d, call("op_smooth_difference"), d, k.d, lit_.real(n.params[0])));
+          w_.line(fmt::format("{} = {}({}, {}, {});", d, call("op_smooth_difference"), d, k.d, param(n, 0, lit_)));
           break;
         // Blends (issue 9): intersection and difference are the union's dual.
         case Kind::BlendUnion:

@@ -36,10 +36,10 @@ std::string shadow_call(const ir::Light& l, const std::string& to_light, const s
   std::string tail = fmt::format("footprint, 0.5f * footprint, {}, v3_dot(n, {}) > 0.0f", l.shadow_steps, to_light);
   if (l.shadows == ir::Light::Shadows::Hard) {
     used.insert("shadow_hard");
-    return fmt::format("shadow_hard({}, {})", common, tail);
+    return fmt::format("shadow_hard(TIME_ARG {}, {})", common, tail);
   }
   used.insert("shadow_soft");
-  return fmt::format("shadow_soft({}, {}, {})", common, lit.real(l.softness), tail);
+  return fmt::format("shadow_soft(TIME_ARG {}, {}, {})", common, lit.real(l.softness), tail);
 }
 
 }  // namespace
@@ -87,7 +87,7 @@ std::string emit_shading(const ir::RenderPlan& plan, const Literals& lit, std::s
   bool any_shadows = false;
   for (const auto& l : plan.lights) any_shadows |= l.shadows != ir::Light::Shadows::None;
   w.line("// ---- lighting: v points from the surface to the eye ----");
-  w.line(fmt::format("vec3 shade_surface(vec3 p, vec3 n, vec3 v, real mat{}{}{})", trap_param, ao ? ", real occlusion" : "",
+  w.line(fmt::format("vec3 shade_surface(TIME_PARAM vec3 p, vec3 n, vec3 v, real mat{}{}{})", trap_param, ao ? ", real occlusion" : "",
                      any_shadows ? ", real footprint" : ""));
   w.open("{");
   w.line("vec3 albedo;");

@@ -231,8 +231,15 @@ void add_default_ambient(ir::RenderPlan& plan) {
 void check_dual_normals(ValueReader& r, const MapReader& top, const ir::Graph& g, ir::NodeId root) {
   for (ir::NodeId id : g.postorder(root)) {
     const ir::Node& n = g.node(id);
-    if (ir::supports_dual_normals(n.kind)) continue;
     const SourceValue* at = top.get("render")->find("normals");
+    if (n.animated()) {
+      r.sink().error(at->loc,
+                     fmt::format("render.normals: dual does not differentiate animated values ('{}', line {})",
+                                 ir::info(n.kind).name, n.loc.line),
+                     "use 'normals: tetrahedral' or 'normals: central' for an animated scene");
+      return;
+    }
+    if (ir::supports_dual_normals(n.kind)) continue;
     r.sink().error(at->loc,
                    fmt::format("render.normals: dual needs dual-number derivatives, which '{}' (line {}) does not have; "
                                "they exist for {}",
