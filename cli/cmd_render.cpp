@@ -184,7 +184,7 @@ Action add_render(CLI::App& app) {
       ->check(CLI::Range(1, 1000));
   cmd->add_flag("-q,--quiet", a->quiet, "No progress or timing on stderr");
   cmd->add_option("--bit-depth", a->bit_depth, "PNG bits per channel: 8 or 16")->check(CLI::IsMember({8, 16}));
-  cmd->add_option("--aov", a->aovs, "Also write these as PFM beside the image (OUT.<aov>.pfm): depth, normal, steps, material")
+  cmd->add_option("--aov", a->aovs, "Also write these as PFM beside the image (OUT.<aov>.pfm): depth, normal, steps, iterations, material")
       ->delimiter(',')
       ->check(CLI::IsMember(kAovNames));
   cmd->add_option("--frames", a->frames, "Render frames N, FIRST:LAST or FIRST:LAST:STEP at time = frame / fps; "

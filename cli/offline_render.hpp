@@ -20,7 +20,7 @@ struct OfflineOutput {
 };
 
 // The AOVs --aov accepts, and the kernel planes each one reads.
-inline const std::vector<std::string> kAovNames = {"depth", "normal", "steps", "material"};
+inline const std::vector<std::string> kAovNames = {"depth", "normal", "steps", "iterations", "material"};
 
 // "<dir>/<stem>.<aov>.pfm" beside the beauty image.
 std::string aov_path(const std::string& beauty, const std::string& aov);

@@ -215,7 +215,7 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
   w.line("#undef FRAME3");
   w.line("const scalar pixel_angle = (scalar)frame[24];");
   if (m.graph->animated(m.root)) w.line("const scalar time = (scalar)frame[25];  // the scene is animated");
-  w.line("real depth, mat, steps;");
+  w.line(aovs ? "real depth, mat, steps, iterations;" : "real depth, mat, steps;");
   w.line("vec3 normal;");
   std::string post;  // per-sample exposure and tone curve
   if (s.exposure != 0) post += fmt::format("c = v3_scale(c, {});  // render.exposure: {} stop(s)\n", lit.real(std::exp2(s.exposure)), s.exposure);
@@ -251,6 +251,8 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
       w.line("real jitter = 0.0f;");
     }
     w.line("vec3 c = sdfc_radiance(TIME_ARG eye, rd, pixel_angle, jitter, &depth, &normal, &mat, &steps);");
+    if (aovs)
+      w.line("iterations = SEL((real)(0.0f), scene_iterations(TIME_ARG v3_mad(eye, rd, fmax(depth, K(0.0f)))), depth >= 0.0f);");
     emit_post();
     w.line("vec3 color = c;");
   } else {
@@ -300,6 +302,8 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
     w.line("color = v3_add(color, c);");
     w.line("// the AOVs come from the first sample of the pass");
     w.line("if (si == s_first) { depth = d_s; normal = n_s; mat = mat_s; steps = steps_s; }");
+    if (aovs)
+      w.line("if (si == s_first) iterations = SEL((real)(0.0f), scene_iterations(TIME_ARG v3_mad(ro, rd, fmax(d_s, K(0.0f)))), d_s >= 0.0f);");
     w.close("}");
     w.line("color = v3_scale(color, 1.0f / (scalar)s_count);");
   }
@@ -313,12 +317,13 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
   w.line("STORE_REAL(color.z, o + 2 * plane);");
   w.line("STORE_REAL(depth, o + 3 * plane);");
   if (aovs) {
-    w.line("// AOVs: normal (0 on a miss), march steps, material id (-1 on a miss)");
+    w.line("// AOVs: normal (0 on a miss), march steps, material id (-1 on a miss), fractal iterations (0 off fractals)");
     w.line("STORE_REAL(normal.x, o + 4 * plane);");
     w.line("STORE_REAL(normal.y, o + 5 * plane);");
     w.line("STORE_REAL(normal.z, o + 6 * plane);");
     w.line("STORE_REAL(steps, o + 7 * plane);");
     w.line("STORE_REAL(mat, o + 8 * plane);");
+    w.line("STORE_REAL(iterations, o + 9 * plane);");
   } else {
     w.line("(void)normal; (void)mat; (void)steps;");
   }
@@ -353,6 +358,7 @@ EmittedKernel emit_opencl(const ir::Module& m, const EmitOptions& opt) {
   Literals lit(m.plan.march.precision);
   std::set<std::string> used;
   std::string scene = detail::emit_scene_functions(m, lit, used);
+  if (opt.aovs) scene += "\n" + detail::emit_scene_iterations(m, lit, used);
   if (m.plan.march.normals == ir::NormalMethod::Dual) scene += "\n" + detail::emit_scene_gradient(m, lit, used);
   std::string shading = detail::emit_shading(m.plan, lit, used);
   std::string kernel = segment_function(m, lit, used) + "\n" + radiance_function(m, used) + "\n" +
@@ -363,7 +369,7 @@ EmittedKernel emit_opencl(const ir::Module& m, const EmitOptions& opt) {
   EmittedKernel k;
   k.simd_width = wd;
   k.planes = {"r", "g", "b", "depth"};
-  if (opt.aovs) k.planes.insert(k.planes.end(), {"normal_x", "normal_y", "normal_z", "steps", "material"});
+  if (opt.aovs) k.planes.insert(k.planes.end(), {"normal_x", "normal_y", "normal_z", "steps", "material", "iterations"});
   k.frame_floats = kFrameFloats;
   std::string before, after;
   for (const auto* f : fns) {

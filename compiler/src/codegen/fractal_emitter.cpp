@@ -156,4 +156,33 @@ std::string emit_fractal_trap(const ir::Node& n, const std::string& p, const Lit
   }
 }
 
+std::string emit_fractal_iterations(const ir::Node& n, const std::string& p, const Literals& lit,
+                                    std::set<std::string>& used) {
+  const auto& q = n.params;
+  auto r = [&](size_t i) { return param(n, i, lit); };
+  auto call = [&](const char* fn) {
+    used.insert(fn);
+    return std::string(fn);
+  };
+  switch (n.kind) {
+    case Kind::Mandelbulb:
+      return fmt::format("{}({}, {}, {}, {}, 0, v3_splat(0.0f))", call("iter_mandelbulb"), p, r(0), int(q[1]), r(2));
+    case Kind::Juliabulb:
+      return fmt::format("{}({}, {}, {}, {}, 1, {})", call("iter_mandelbulb"), p, r(0), int(q[1]), r(2),
+                         lit.vec3({q[3], q[4], q[5]}));
+    case Kind::Mandelbox:
+      return fmt::format("{}({}, {}, {}, {}, {}, {}, {}, {}, {})", call("iter_mandelbox"), p, r(0), lit.real(q[1] * q[1]),
+                         lit.real(q[2] * q[2]), r(3), int(q[4]), int(q[5]), lit.vec3({q[6], q[7], q[8]}),
+                         lit.vec3({q[9], q[10], q[11]}));
+    case Kind::QuaternionJulia:
+      return fmt::format("{}({}, {}, {}, {}, {}, {}, {})", call("iter_quaternion_julia"), p, r(6), r(0),
+                         lit.vec3({q[1], q[2], q[3]}), int(q[4]), int(q[5]), r(7));
+    case Kind::Menger:
+    case Kind::Sierpinski:
+    case Kind::Hybrid: return lit.typed(q[0]);
+    case Kind::Kifs: return lit.typed(q[5]);
+    default: return "";
+  }
+}
+
 }  // namespace sdfc::codegen::detail

@@ -20,5 +20,10 @@ std::string emit_fractal(const ir::Node& n, const std::string& p, const Literals
 // The orbit-trap value of the node at `p` (evaluated once per hit), or ""
 // for kinds without one (the fold fractals, the hybrid).
 std::string emit_fractal_trap(const ir::Node& n, const std::string& p, const Literals& lit, std::set<std::string>& used);
+// The fractal's iteration count at p for the iterations AOV: the escape
+// iteration of escape-time fractals, the configured count of folding ones
+// (which never escape) and of hybrids.
+std::string emit_fractal_iterations(const ir::Node& n, const std::string& p, const Literals& lit,
+                                    std::set<std::string>& used);
 
 }  // namespace sdfc::codegen::detail

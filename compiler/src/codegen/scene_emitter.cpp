@@ -28,11 +28,17 @@ class SceneEmitter {
  public:
   // trap: emit scene_trap instead, where the tracked value is the orbit
   // trap of the nearest fractal (chosen by the same rules as the material).
-  SceneEmitter(const ir::Module& m, const Literals& lit, bool with_mat, std::set<std::string>& used, bool trap = false)
-      : g_(*m.graph), lit_(lit), with_mat_(with_mat || trap), trap_(trap), used_(used), file_(m.source_name) {}
+  // iterations: the same, tracking the nearest fractal's iteration count (the AOV).
+  SceneEmitter(const ir::Module& m, const Literals& lit, bool with_mat, std::set<std::string>& used, bool trap = false,
+               bool iterations = false)
+      : g_(*m.graph), lit_(lit), with_mat_(with_mat || trap || iterations), trap_(trap || iterations),
+        iterations_(iterations), used_(used), file_(m.source_name) {}
 
   std::string function(NodeId root) {
-    w_.line(trap_ ? "real scene_trap(TIME_PARAM vec3 p)" : with_mat_ ? "real scene_dist_mat(TIME_PARAM vec3 p, real* mat)" : "real scene_dist(TIME_PARAM vec3 p)");
+    w_.line(iterations_ ? "real scene_iterations(TIME_PARAM vec3 p)"
+            : trap_     ? "real scene_trap(TIME_PARAM vec3 p)"
+            : with_mat_ ? "real scene_dist_mat(TIME_PARAM vec3 p, real* mat)"
+                        : "real scene_dist(TIME_PARAM vec3 p)");
     w_.open("{");
     Value v = emit(root, "p");
     if (trap_) {
@@ -246,10 +252,12 @@ class SceneEmitter {
         if (is_fractal(n)) {
           std::string expr = emit_fractal(n, p, lit_, w_, used_);
           Value v = leaf(n, expr);
-          std::string trap = trap_ ? emit_fractal_trap(n, p, lit_, used_) : "";
+          std::string trap = iterations_ ? emit_fractal_iterations(n, p, lit_, used_)
+                             : trap_     ? emit_fractal_trap(n, p, lit_, used_)
+                                         : "";
           if (!trap.empty()) {
-            v.mat = var("trap");
-            w_.line(fmt::format("real {} = {};  // orbit trap", v.mat, trap));
+            v.mat = var(iterations_ ? "it" : "trap");
+            w_.line(fmt::format("real {} = {};  // {}", v.mat, trap, iterations_ ? "iteration count" : "orbit trap"));
           }
           return v;
         }
@@ -377,12 +385,18 @@ class SceneEmitter {
   const Literals& lit_;
   bool with_mat_;
   bool trap_;
+  bool iterations_;
   std::set<std::string>& used_;
   std::string file_;
   CodeWriter w_;
 };
 
 }  // namespace
+
+std::string emit_scene_iterations(const ir::Module& m, const Literals& lit, std::set<std::string>& used) {
+  return "// ---- iteration count of the nearest fractal (0 elsewhere): the iterations AOV, once per pixel ----\n" +
+         SceneEmitter(m, lit, false, used, false, true).function(m.root);
+}
 
 std::string emit_scene_functions(const ir::Module& m, const Literals& lit, std::set<std::string>& used) {
   used.insert("vec3_ops");

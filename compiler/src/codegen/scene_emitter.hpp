@@ -10,4 +10,7 @@ namespace sdfc::codegen::detail {
 // `real scene_dist_mat(vec3 p, real* mat)`; adds the stdlib functions they
 // call to `used`.
 std::string emit_scene_functions(const ir::Module& m, const Literals& lit, std::set<std::string>& used);
+// `real scene_iterations(vec3 p)`: the iteration count of the nearest
+// fractal at p, 0 where a non-fractal surface is nearest (the AOV).
+std::string emit_scene_iterations(const ir::Module& m, const Literals& lit, std::set<std::string>& used);
 }  // namespace sdfc::codegen::detail
