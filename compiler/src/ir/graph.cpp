@@ -103,6 +103,8 @@ NodeId Builder::make(Kind k, std::vector<double> params, std::vector<NodeId> chi
     if (v == 0.0) v = 0.0;
     put(&v, sizeof v);
   }
+  uint32_t nc = static_cast<uint32_t>(children.size());  // so the animation text below cannot pass for children
+  put(&nc, sizeof nc);
   for (NodeId c : children) put(&c, sizeof c);
   // Animated parameters: their canonical text (a static node has none).
   bool any = false;
