@@ -135,8 +135,12 @@ int ValueReader::integer(const SourceValue& v, std::string_view what, int lo, in
     if (e && expr::uses(e, "time"))
       sink_.error(v.loc, fmt::format("{} cannot be animated", what),
                   "a whole number shapes the kernel's code (a loop count, a choice); it is fixed when the scene compiles");
-    else if (e)
-      sink_.error(v.loc, fmt::format("{}: expected a whole number, got the expression \"{}\"", what, v.scalar), "write the number");
+    else if (e) {
+      // A static expression folds to its value, which must be a whole number in range.
+      double x = expr::evaluate(e, {});
+      if (x == std::floor(x) && x >= lo && x <= hi) return static_cast<int>(x);
+      sink_.error(v.loc, fmt::format("{}: expected a whole number from {} to {}, but \"{}\" is {}", what, lo, hi, v.scalar, x), "");
+    }
     return lo;
   }
   if (!v.is_scalar() || v.quoted || v.scalar.find_first_not_of("+-0123456789") != std::string::npos ||
