@@ -186,6 +186,24 @@ TEST_F(OfflineOutput, AnimatedValuesRenderEveryFrameFromOneBuild) {
   EXPECT_LT(double(total) / double(a.size()), 0.5);
 }
 
+// Animated lights and fog: the frames differ although the geometry is static.
+TEST_F(OfflineOutput, AnimatedLightsAndFog) {
+  std::string s = scene("render: {width: 48, height: 32}\ncamera: {position: [0, -5, 2], target: [0, 0, 0.4]}\n"
+                        "lights:\n  - point: {position: [\"2*sin(time)\", -2, 3], intensity: \"6 + 4*sin(time)\"}\n"
+                        "  - ambient: {intensity: 0.2}\n"
+                        "effects: {fog: {color: [0.5, 0.6, 0.7], density: \"0.1 + 0.08*sin(time)\"}}\n"
+                        "scene: {union: [{plane: {}}, {sphere: {radius: 0.5}, translate: [0, 0, 0.5]}]}\n");
+  Result r = sdfc("render " + s + " --frames 0:1 --fps 1 -o " + (dir_ / "l_%d.png").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  size_t builds = 0;
+  for (size_t at = r.err.find("kernel built"); at != std::string::npos; at = r.err.find("kernel built", at + 1)) ++builds;
+  EXPECT_EQ(builds, 1u) << r.err;
+  int w, h;
+  auto a = load_rgb8(dir_ / "l_0.png", &w, &h), b = load_rgb8(dir_ / "l_1.png", &w, &h);
+  ASSERT_FALSE(a.empty());
+  EXPECT_NE(a, b);
+}
+
 // --aov iterations: the escape iteration of the fractal a pixel hits, 0 on
 // other surfaces and misses.
 TEST_F(OfflineOutput, IterationsAov) {

@@ -134,10 +134,10 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
     if (f.height_falloff > 0) {
       used.insert("fog_height");
       w.line(fmt::format("color = fog_height(color, {}, ro, rd, fog_t, {}, {}, {}, {});", lit.vec3(f.color),
-                         lit.vec3(m.plan.camera.up), lit.real(f.density), lit.real(f.height_falloff), lit.real(f.base_height)));
+                         lit.vec3(m.plan.camera.up), detail::animated(f.density_anim, f.density, lit), lit.real(f.height_falloff), lit.real(f.base_height)));
     } else {
       used.insert("fog_exponential");
-      w.line(fmt::format("color = fog_exponential(color, {}, fog_t, {});", lit.vec3(f.color), lit.real(f.density)));
+      w.line(fmt::format("color = fog_exponential(color, {}, fog_t, {});", lit.vec3(f.color), detail::animated(f.density_anim, f.density, lit)));
     }
   }
   w.line("*t_out = t; *hit_out = hit; *n_out = n; *mat_out = mat; *steps_out = steps;");
@@ -214,7 +214,7 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
   w.line("vec3 eye = FRAME3(0), forward = FRAME3(6), right = FRAME3(12), up = FRAME3(18);");
   w.line("#undef FRAME3");
   w.line("const scalar pixel_angle = (scalar)frame[24];");
-  if (m.graph->animated(m.root)) w.line("const scalar time = (scalar)frame[25];  // the scene is animated");
+  if (detail::uses_time(m)) w.line("const scalar time = (scalar)frame[25];  // the scene is animated");
   w.line(aovs ? "real depth, mat, steps, iterations;" : "real depth, mat, steps;");
   w.line("vec3 normal;");
   std::string post;  // per-sample exposure and tone curve
@@ -363,7 +363,7 @@ EmittedKernel emit_opencl(const ir::Module& m, const EmitOptions& opt) {
   std::string shading = detail::emit_shading(m.plan, lit, used);
   std::string kernel = segment_function(m, lit, used) + "\n" + radiance_function(m, used) + "\n" +
                        render_kernel(m, lit, used, opt.aovs);
-  if (opt.probe_kernel) kernel += "\n" + probe_kernel(m.graph->animated(m.root));
+  if (opt.probe_kernel) kernel += "\n" + probe_kernel(detail::uses_time(m));
 
   auto fns = StdlibManifest::instance().closure({used.begin(), used.end()});
   EmittedKernel k;
@@ -383,7 +383,7 @@ EmittedKernel emit_opencl(const ir::Module& m, const EmitOptions& opt) {
                      m.plan.march.precision == ir::Precision::Float ? "float" : "double", wd, ir::count_nodes(m));
   src += "// stdlib functions:";
   for (const auto& n : k.stdlib_functions) src += " " + n;
-  src += "\n\n" + detail::prelude(wd, m.plan.march.precision, m.graph->animated(m.root));
+  src += "\n\n" + detail::prelude(wd, m.plan.march.precision, detail::uses_time(m));
   src += "\n// ---- stdlib ----" + before + "\n";
   src += scene + "\n";
   if (!after.empty()) src += "// ---- stdlib that calls the scene ----" + after + "\n";

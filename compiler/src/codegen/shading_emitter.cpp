@@ -108,11 +108,14 @@ std::string emit_shading(const ir::RenderPlan& plan, const Literals& lit, std::s
   for (size_t i = 0; i < plan.lights.size(); ++i) {
     const ir::Light& l = plan.lights[i];
     ir::Vec3d radiance{l.color[0] * l.intensity, l.color[1] * l.intensity, l.color[2] * l.intensity};
+    // An animated intensity scales the colour per frame.
+    std::string rad = l.intensity_anim ? fmt::format("v3_scale({}, {})", lit.vec3(l.color), animated(l.intensity_anim, l.intensity, lit))
+                                       : lit.vec3(radiance);
     if (l.kind == ir::LightKind::Directional) {
       any_direct = true;
       w.line(fmt::format("// light {}: directional ({})", i, where(l.loc)));
       std::string to_light = lit.vec3({-l.direction[0], -l.direction[1], -l.direction[2]});
-      std::string term = fmt::format("shade_blinn_phong(n, {}, v, albedo, specular, shininess, {})", to_light, lit.vec3(radiance));
+      std::string term = fmt::format("shade_blinn_phong(n, {}, v, albedo, specular, shininess, {})", to_light, rad);
       std::string sh = shadow_call(l, to_light, lit.real(plan.march.max_distance), lit, used);
       if (!sh.empty()) term = fmt::format("v3_scale({}, {})", term, sh);
       w.line(fmt::format("c = v3_add(c, {});", term));
@@ -120,12 +123,16 @@ std::string emit_shading(const ir::RenderPlan& plan, const Literals& lit, std::s
       any_direct = true;
       w.line(fmt::format("// light {}: point, falls off with the squared distance ({})", i, where(l.loc)));
       w.open("{");
-      w.line(fmt::format("vec3 l = v3_sub({}, p);", lit.vec3(l.position)));
+      std::string pos = lit.vec3(l.position);
+      if (l.position_anim[0] || l.position_anim[1] || l.position_anim[2])
+        pos = fmt::format("v3({}, {}, {})", animated(l.position_anim[0], l.position[0], lit),
+                          animated(l.position_anim[1], l.position[1], lit), animated(l.position_anim[2], l.position[2], lit));
+      w.line(fmt::format("vec3 l = v3_sub({}, p);", pos));
       w.line("real dist2 = fmax(v3_dot(l, l), K(1e-8f));");
       w.line("l = v3_scale(l, rsqrt(dist2));");
       std::string sh = shadow_call(l, "l", "sqrt(dist2)", lit, used);
       w.line(fmt::format("c = v3_add(c, v3_scale(shade_blinn_phong(n, l, v, albedo, specular, shininess, {}), {}1.0f / dist2));",
-                         lit.vec3(radiance), sh.empty() ? "" : sh + " * "));
+                         rad, sh.empty() ? "" : sh + " * "));
       w.close("}");
     }
   }

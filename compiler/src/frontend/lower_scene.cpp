@@ -152,14 +152,19 @@ void read_lights(ValueReader& r, const SourceValue& v, ir::RenderPlan& plan) {
       l.kind = ir::LightKind::Directional;
       l.direction = m.direction("direction", {0.577, 0.577, -0.577});
       l.color = m.vec3("color", l.color, unit);
-      l.intensity = m.number("intensity", 1.0, Range::non_negative(1e4));
+      frontend::Param intensity = m.param("intensity", 1.0, Range::non_negative(1e4));
+      l.intensity = intensity.value, l.intensity_anim = intensity.anim;
       read_shadows(m, l);
     } else if (key.scalar == "point") {
       MapReader m(r, body, what, {"position", "color", "intensity", "shadows", "softness", "shadow_steps"});
       l.kind = ir::LightKind::Point;
-      if (m.require("position")) l.position = m.vec3("position", l.position);
+      if (m.require("position")) {
+        frontend::Param3 p = m.param3("position", l.position);
+        for (int i = 0; i < 3; ++i) l.position[i] = p[i].value, l.position_anim[i] = p[i].anim;
+      }
       l.color = m.vec3("color", l.color, unit);
-      l.intensity = m.number("intensity", 1.0, Range::non_negative(1e6));
+      frontend::Param intensity = m.param("intensity", 1.0, Range::non_negative(1e6));
+      l.intensity = intensity.value, l.intensity_anim = intensity.anim;
       read_shadows(m, l);
     } else if (key.scalar == "ambient") {
       MapReader m(r, body, what, {"color", "intensity"});

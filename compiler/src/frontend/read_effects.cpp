@@ -29,7 +29,8 @@ void read_fog(ValueReader& r, const SourceValue& v, ir::Fog& f) {
   MapReader m(r, v, "effects.fog", {"color", "density", "height_falloff", "base_height"});
   f.enabled = true;
   f.color = m.vec3("color", f.color, Range::closed(0, 1000));
-  f.density = m.number("density", f.density, Range::non_negative(1e3));
+  Param density = m.param("density", f.density, Range::non_negative(1e3));
+  f.density = density.value, f.density_anim = density.anim;
   f.height_falloff = m.number("height_falloff", f.height_falloff, Range::non_negative(1e3));
   f.base_height = m.number("base_height", f.base_height);
 }

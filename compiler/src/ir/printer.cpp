@@ -76,7 +76,8 @@ std::string print_plan(const RenderPlan& p) {
       case LightKind::Point: out += fmt::format("light {} point position={}", i, vec(l.position)); break;
       case LightKind::Ambient: out += fmt::format("light {} ambient", i); break;
     }
-    out += fmt::format(" color={} intensity={}\n", vec(l.color), num(l.intensity));
+    out += fmt::format(" color={} intensity={}\n", vec(l.color),
+                       l.intensity_anim ? "\"" + expr::to_string(l.intensity_anim) + "\"" : num(l.intensity));
   }
   for (size_t i = 0; i < p.materials.size(); ++i) {
     const MaterialDef& md = p.materials[i];
