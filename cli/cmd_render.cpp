@@ -206,7 +206,7 @@ Action add_render(CLI::App& app) {
                 "On Ctrl-C, write the tiles done so far to OUT.partial.png (the rest black; OUT.png is never "
                 "written then); with render.samples > 1 it is also refreshed after each pass");
   cmd->add_option("--bit-depth", a->bit_depth, "PNG bits per channel: 8 or 16")->check(CLI::IsMember({8, 16}));
-  cmd->add_option("--aov", a->aovs, "Also write these as PFM beside the image (OUT.<aov>.pfm): depth, normal, steps, material, hit")
+  cmd->add_option("--aov", a->aovs, "Also write these as PFM beside the image (OUT.<aov>.pfm): depth, normal, steps, iterations, material, hit")
       ->delimiter(',')
       ->check(CLI::IsMember(kAovNames));
   cmd->add_option("--frames", a->frames, "Render frames N, FIRST:LAST or FIRST:LAST:STEP at time = frame / fps; "

@@ -25,7 +25,7 @@ struct OfflineOutput {
 
 // The AOVs --aov accepts, and the kernel planes each one reads ("hit" is
 // derived from depth: 1 where the ray hit, 0 on a miss).
-inline const std::vector<std::string> kAovNames = {"depth", "normal", "steps", "material", "hit"};
+inline const std::vector<std::string> kAovNames = {"depth", "normal", "steps", "iterations", "material", "hit"};
 
 // "<dir>/<stem>.<aov>.pfm" beside the beauty image.
 std::string aov_path(const std::string& beauty, const std::string& aov);

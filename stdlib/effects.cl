@@ -35,7 +35,7 @@ inline real fx_tent(real u)
 // march_sphere_trace that also returns the closest approach (the smallest
 // distance seen), which glow needs; a separate function so scenes without
 // glow do not pay for the extra min per step.
-inline mask march_sphere_trace_closest(vec3 ro, vec3 rd, real t0, real t1, mask active,
+inline mask march_sphere_trace_closest(TIME_PARAM vec3 ro, vec3 rd, real t0, real t1, mask active,
                                        real pixel_angle, real hit_eps, real step_factor,
                                        int max_steps, real* t_out, real* steps, real* closest)
 {
@@ -44,7 +44,7 @@ inline mask march_sphere_trace_closest(vec3 ro, vec3 rd, real t0, real t1, mask 
     real n = 0.0f;
     real c = (real)(1e30f);
     for (int i = 0; i < max_steps && M_ANY(active); ++i) {
-        real d = scene_dist(v3_mad(ro, rd, t));
+        real d = scene_dist(TIME_ARG v3_mad(ro, rd, t));
         c = SEL(c, fmin(c, d), active);
         mask now_hit = active & (d < hit_eps * pixel_angle * fmax(t, K(1e-4f)));
         hit = hit | now_hit;
@@ -66,13 +66,13 @@ inline mask march_sphere_trace_closest(vec3 ro, vec3 rd, real t0, real t1, mask 
 // 0 where something lies between p and the light along l within [tmin, tmax],
 // else 1. tmin > 0 steps off the surface the ray starts on; eps is the hit
 // distance; every step advances at least min_step so the march ends.
-inline real shadow_hard(vec3 p, vec3 l, real tmin, real tmax, real eps, real min_step,
+inline real shadow_hard(TIME_PARAM vec3 p, vec3 l, real tmin, real tmax, real eps, real min_step,
                         int max_steps, mask active)
 {
     real lit = 1.0f;
     real t = tmin;
     for (int i = 0; i < max_steps && M_ANY(active); ++i) {
-        real d = scene_dist(v3_mad(p, l, t));
+        real d = scene_dist(TIME_ARG v3_mad(p, l, t));
         mask blocked = active & (d < eps);
         lit = SEL(lit, (real)(0.0f), blocked);
         active = active & !blocked;
@@ -91,14 +91,14 @@ inline real shadow_hard(vec3 p, vec3 l, real tmin, real tmax, real eps, real min
 // places the closest approach between two steps (from the last two
 // distances), which removes the rings plain sampling leaves. t starts at
 // tmin > 0 and the divisor is kept at least tmin, so it never divides by 0.
-inline real shadow_soft(vec3 p, vec3 l, real tmin, real tmax, real k, real eps, real min_step,
+inline real shadow_soft(TIME_PARAM vec3 p, vec3 l, real tmin, real tmax, real k, real eps, real min_step,
                         int max_steps, mask active)
 {
     real res = 1.0f;
     real t = tmin;
     real prev = (real)(1e20f);
     for (int i = 0; i < max_steps && M_ANY(active); ++i) {
-        real d = scene_dist(v3_mad(p, l, t));
+        real d = scene_dist(TIME_ARG v3_mad(p, l, t));
         // The triangulation needs the two distance spheres to overlap
         // (d < 2 prev); a longer minimum step or an estimated distance can
         // break that, and then the plain d is used.
@@ -122,13 +122,13 @@ inline real shadow_soft(vec3 p, vec3 l, real tmin, real tmax, real k, real eps, 
 // Ambient occlusion from distance probes along the normal (seed 001 part II):
 // in the open, the distance at height h above the surface is h; any shortfall
 // means nearby geometry. Nearer probes weigh more. 1 = unoccluded.
-inline real ao_normal_samples(vec3 p, vec3 n, int samples, real distance, real strength)
+inline real ao_normal_samples(TIME_PARAM vec3 p, vec3 n, int samples, real distance, real strength)
 {
     real occ = 0.0f;
     real w = 1.0f, wsum = 0.0f;
     for (int i = 1; i <= samples; ++i) {
         real h = distance * (real)((scalar)i / (scalar)samples);
-        real d = scene_dist(v3_mad(p, n, h));
+        real d = scene_dist(TIME_ARG v3_mad(p, n, h));
         occ += w * fmax(h - d, K(0.0f)) / h;
         wsum += w;
         w *= 0.7f;

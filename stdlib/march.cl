@@ -25,7 +25,7 @@ inline mask ray_box(vec3 ro, vec3 rd, vec3 lo, vec3 hi, real* t0, real* t1)
 // hit_eps times the pixel footprint at t (t * pixel_angle), so precision
 // follows the pixel size instead of a fixed epsilon. Lanes that run out of
 // steps count as misses. `*steps` returns the steps each lane took.
-inline mask march_sphere_trace(vec3 ro, vec3 rd, real t0, real t1, mask active,
+inline mask march_sphere_trace(TIME_PARAM vec3 ro, vec3 rd, real t0, real t1, mask active,
                                real pixel_angle, real hit_eps, real step_factor,
                                int max_steps, real* t_out, real* steps)
 {
@@ -33,7 +33,7 @@ inline mask march_sphere_trace(vec3 ro, vec3 rd, real t0, real t1, mask active,
     mask hit = active & !active;
     real n = 0.0f;
     for (int i = 0; i < max_steps && M_ANY(active); ++i) {
-        real d = scene_dist(v3_mad(ro, rd, t));
+        real d = scene_dist(TIME_ARG v3_mad(ro, rd, t));
         mask now_hit = active & (d < hit_eps * pixel_angle * fmax(t, K(1e-4f)));
         hit = hit | now_hit;
         active = active & !now_hit;
@@ -52,12 +52,12 @@ inline mask march_sphere_trace(vec3 ro, vec3 rd, real t0, real t1, mask active,
 //! class: helper
 // Four-tap tetrahedral gradient (seed 000 Eq. 5): the cheapest symmetric
 // finite difference. h follows the pixel footprint at the hit.
-inline vec3 normal_tetrahedral(vec3 p, real h)
+inline vec3 normal_tetrahedral(TIME_PARAM vec3 p, real h)
 {
-    real a = scene_dist(v3(p.x + h, p.y - h, p.z - h));
-    real b = scene_dist(v3(p.x - h, p.y - h, p.z + h));
-    real c = scene_dist(v3(p.x - h, p.y + h, p.z - h));
-    real d = scene_dist(v3(p.x + h, p.y + h, p.z + h));
+    real a = scene_dist(TIME_ARG v3(p.x + h, p.y - h, p.z - h));
+    real b = scene_dist(TIME_ARG v3(p.x - h, p.y - h, p.z + h));
+    real c = scene_dist(TIME_ARG v3(p.x - h, p.y + h, p.z - h));
+    real d = scene_dist(TIME_ARG v3(p.x + h, p.y + h, p.z + h));
     return v3_normalize(v3(a - b - c + d, -a - b + c + d, -a + b - c + d));
 }
 
@@ -66,11 +66,11 @@ inline vec3 normal_tetrahedral(vec3 p, real h)
 //! after-scene
 //! class: helper
 // Six-tap central differences.
-inline vec3 normal_central(vec3 p, real h)
+inline vec3 normal_central(TIME_PARAM vec3 p, real h)
 {
-    real dx = scene_dist(v3(p.x + h, p.y, p.z)) - scene_dist(v3(p.x - h, p.y, p.z));
-    real dy = scene_dist(v3(p.x, p.y + h, p.z)) - scene_dist(v3(p.x, p.y - h, p.z));
-    real dz = scene_dist(v3(p.x, p.y, p.z + h)) - scene_dist(v3(p.x, p.y, p.z - h));
+    real dx = scene_dist(TIME_ARG v3(p.x + h, p.y, p.z)) - scene_dist(TIME_ARG v3(p.x - h, p.y, p.z));
+    real dy = scene_dist(TIME_ARG v3(p.x, p.y + h, p.z)) - scene_dist(TIME_ARG v3(p.x, p.y - h, p.z));
+    real dz = scene_dist(TIME_ARG v3(p.x, p.y, p.z + h)) - scene_dist(TIME_ARG v3(p.x, p.y, p.z - h));
     return v3_normalize(v3(dx, dy, dz));
 }
 
@@ -125,7 +125,7 @@ inline real ray_sphere_exit(vec3 ro, vec3 rd, vec3 c, real r, real tmax)
 // (d < 0, an overshoot), or [hit, hit + 2 eps] when a point that close
 // ahead is inside; a lane without a sign change keeps its hit, which is
 // within hit_eps pixels already. Also returns the closest approach (glow).
-inline mask march_sphere_trace_refined(vec3 ro, vec3 rd, real t0, real t1, mask active,
+inline mask march_sphere_trace_refined(TIME_PARAM vec3 ro, vec3 rd, real t0, real t1, mask active,
                                        real pixel_angle, real hit_eps, real step_factor,
                                        int max_steps, real* t_out, real* steps, real* closest)
 {
@@ -134,7 +134,7 @@ inline mask march_sphere_trace_refined(vec3 ro, vec3 rd, real t0, real t1, mask 
     real n = 0.0f;
     real c = (real)(1e30f);
     for (int i = 0; i < max_steps && M_ANY(active); ++i) {
-        real d = scene_dist(v3_mad(ro, rd, t));
+        real d = scene_dist(TIME_ARG v3_mad(ro, rd, t));
         c = SEL(c, fmin(c, d), active);
         mask now_hit = active & (d < hit_eps * pixel_angle * fmax(t, K(1e-4f)));
         d_hit = SEL(d_hit, d, now_hit);
@@ -147,12 +147,12 @@ inline mask march_sphere_trace_refined(vec3 ro, vec3 rd, real t0, real t1, mask 
     }
     real eps = hit_eps * pixel_angle * fmax(t, K(1e-4f));
     real ahead = t + 2.0f * eps;
-    mask inside_ahead = hit & (d_hit >= 0.0f) & (scene_dist(v3_mad(ro, rd, ahead)) < 0.0f);
+    mask inside_ahead = hit & (d_hit >= 0.0f) & (scene_dist(TIME_ARG v3_mad(ro, rd, ahead)) < 0.0f);
     mask bracketed = (hit & (d_hit < 0.0f)) | inside_ahead;
     real lo = SEL(t_prev, t, inside_ahead), hi = SEL(t, ahead, inside_ahead);
     for (int i = 0; i < 60 && M_ANY(bracketed); ++i) {
         real mid = 0.5f * (lo + hi);
-        mask in = scene_dist(v3_mad(ro, rd, mid)) < 0.0f;
+        mask in = scene_dist(TIME_ARG v3_mad(ro, rd, mid)) < 0.0f;
         hi = SEL(hi, mid, bracketed & in);
         lo = SEL(lo, mid, bracketed & !in);
     }

@@ -137,12 +137,12 @@ TEST(Specialisation, OrbitTrapOnlyAtTheHit) {
   std::string k = codegen::emit_opencl(passes::run_pipeline(test::lower_text(
       "materials: {glow: {orbit_trap: {palette: [[0, 0, 1], [1, 0.5, 0]], mix: 0.6}}}\n"
       "scene: {union: [{mandelbox: {}, material: glow}, {sphere: {radius: 1}, translate: [9, 0, 0]}]}\n")), {1, false}).source;
-  size_t dist = k.find("real scene_dist(vec3 p)"), dist_end = k.find("\n}\n", dist);
+  size_t dist = k.find("real scene_dist(TIME_PARAM vec3 p)"), dist_end = k.find("\n}\n", dist);
   ASSERT_NE(dist, std::string::npos);
   EXPECT_EQ(k.substr(dist, dist_end - dist).find("trap"), std::string::npos);
-  EXPECT_NE(k.find("real scene_trap(vec3 p)"), std::string::npos);
+  EXPECT_NE(k.find("real scene_trap(TIME_PARAM vec3 p)"), std::string::npos);
   EXPECT_NE(k.find("trap_mandelbox(p"), std::string::npos);
-  EXPECT_NE(k.find("real trap = scene_trap(pos);"), std::string::npos);
+  EXPECT_NE(k.find("real trap = scene_trap(TIME_ARG pos);"), std::string::npos);
   EXPECT_NE(k.find("v3_mix(*albedo, pal, (real)(0.6f))"), std::string::npos) << k;
   // Without an orbit-trap material there is no trap code at all.
   std::string plain = codegen::emit_opencl(passes::run_pipeline(test::lower_text("scene: {mandelbox: {}}\n")), {1, false}).source;

@@ -1,5 +1,7 @@
 #include "conformance.hpp"
 
+#include "sdfc/reference/at_time.hpp"
+
 #include <fmt/format.h>
 
 #include <cstring>
@@ -17,17 +19,18 @@ bool same_bits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 }  // namespace
 
 ProbeCheck probe_and_compare(const ir::Module& m, const EvalConfig& cfg, std::vector<V3> points,
-                             const Tolerance& tol, const std::vector<char>& check_material) {
+                             const Tolerance& tol, const std::vector<char>& check_material, double time) {
   ProbeCheck pc;
   for (auto& p : points) p = test::to_float_point(p);
   pc.points = std::move(points);
+  ir::Module then = reference::at_time(m, time);
   for (const auto& p : pc.points) {
-    reference::Sample s = reference::evaluate(*m.graph, m.root, p);
+    reference::Sample s = reference::evaluate(*then.graph, then.root, p);
     pc.ref_d.push_back(s.distance);
     pc.ref_mat.push_back(s.material);
   }
   test::Probe probe(m, cfg.simd_width);
-  pc.got = probe.run(pc.points);
+  pc.got = probe.run(pc.points, time);
 
   int bad_d = 0, bad_dm = 0, bad_mat = 0, checked_mat = 0;
   double worst = 0;  // largest |error| / allowed

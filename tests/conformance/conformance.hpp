@@ -70,8 +70,10 @@ struct ProbeCheck {
   std::vector<int> ref_mat;        // reference material at points
   test::ProbeResult got;
 };
+// `time`: the frame time the kernel gets; the reference evaluates the
+// module at that time (reference::at_time).
 ProbeCheck probe_and_compare(const ir::Module& m, const EvalConfig& cfg, std::vector<V3> points,
-                             const Tolerance& tol, const std::vector<char>& check_material = {});
+                             const Tolerance& tol, const std::vector<char>& check_material = {}, double time = 0);
 
 // Every point with a reference distance <= 0 (inside or on the surface)
 // must lie in the root's inferred bounds: the render kernel clips rays to

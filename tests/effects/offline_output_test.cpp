@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -131,6 +132,113 @@ TEST_F(OfflineOutput, SequenceOfThreeFramesFromOneBuild) {
   EXPECT_NE(frames[0], frames[1]);
   EXPECT_NE(frames[1], frames[2]);
   EXPECT_NE(frames[0], frames[2]);
+}
+
+// Animated scene values: three frames, three different images, one build;
+// frame 1 (time 1 s at --fps 1) matches the static scene with the values at
+// time 1 written out.
+TEST_F(OfflineOutput, AnimatedValuesRenderEveryFrameFromOneBuild) {
+  const std::string head = "render: {width: 64, height: 40}\ncamera: {position: [0, -5, 1.5], target: [0, 0, 0.3]}\n";
+  std::string s = scene(head +
+      "scene:\n  union:\n    - plane: {}\n"
+      "    - {sphere: {radius: \"0.4 + 0.1*time\"}, translate: [\"0.5*time - 0.5\", 0, 0.6]}\n"
+      "    - {box: {size: [0.5, 0.5, 0.5]}, rotate: {axis: [0, 0, 1], degrees: \"30*time\"}, translate: [-1.2, 0, 0.3]}\n"
+      "    - {mandelbulb: {power: \"7 + sin(time)\", iterations: 6}, scale: 0.5, translate: [1.3, 0, 0.6]}\n");
+  Result r = sdfc("render " + s + " --frames 0:2 --fps 1 -o " + (dir_ / "seq" / "f_%02d.png").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  size_t builds = 0;
+  for (size_t at = r.err.find("kernel built"); at != std::string::npos; at = r.err.find("kernel built", at + 1)) ++builds;
+  EXPECT_EQ(builds, 1u) << r.err;
+  std::vector<std::vector<unsigned char>> frames;
+  int w = 0, h = 0;
+  for (int i = 0; i < 3; ++i) {
+    frames.push_back(load_rgb8(dir_ / "seq" / ("f_0" + std::to_string(i) + ".png"), &w, &h));
+    ASSERT_FALSE(frames.back().empty()) << i;
+  }
+  EXPECT_NE(frames[0], frames[1]);
+  EXPECT_NE(frames[1], frames[2]);
+  EXPECT_NE(frames[0], frames[2]);
+  // The same scene at time 1, written out (the bulb's power, 7 + sin(1), takes the trig
+  // formula, so the bulb is left out of this comparison).
+  std::string animated = scene(head +
+      "scene:\n  union:\n    - plane: {}\n"
+      "    - {sphere: {radius: \"0.4 + 0.1*time\"}, translate: [\"0.5*time - 0.5\", 0, 0.6]}\n"
+      "    - {box: {size: [0.5, 0.5, 0.5]}, rotate: {axis: [0, 0, 1], degrees: \"30*time\"}, translate: [-1.2, 0, 0.3]}\n");
+  ASSERT_EQ(sdfc("render " + animated + " --frames 1 --fps 1 -q -o " + (dir_ / "a_%d.png").string()).code, 0);
+  std::string fixed = scene(head +
+      "scene:\n  union:\n    - plane: {}\n"
+      "    - {sphere: {radius: 0.5}, translate: [0, 0, 0.6]}\n"
+      "    - {box: {size: [0.5, 0.5, 0.5]}, rotate: {axis: [0, 0, 1], degrees: 30}, translate: [-1.2, 0, 0.3]}\n");
+  ASSERT_EQ(sdfc("render " + fixed + " -q -o " + (dir_ / "fixed.png").string()).code, 0);
+  int w2, h2;
+  auto a = load_rgb8(dir_ / "a_1.png", &w, &h), b = load_rgb8(dir_ / "fixed.png", &w2, &h2);
+  ASSERT_EQ(a.size(), b.size());
+  ASSERT_FALSE(a.empty());
+  long total = 0;
+  int worst = 0;
+  for (size_t i = 0; i < a.size(); ++i) {
+    int d = std::abs(int(a[i]) - int(b[i]));
+    total += d;
+    worst = std::max(worst, d);
+  }
+  // float rounding of the per-frame expressions and the wider (animated) march bounds only
+  EXPECT_LE(worst, 8);
+  EXPECT_LT(double(total) / double(a.size()), 0.5);
+}
+
+// Animated lights and fog: the frames differ although the geometry is static.
+TEST_F(OfflineOutput, AnimatedLightsAndFog) {
+  std::string s = scene("render: {width: 48, height: 32}\ncamera: {position: [0, -5, 2], target: [0, 0, 0.4]}\n"
+                        "lights:\n  - point: {position: [\"2*sin(time)\", -2, 3], intensity: \"6 + 4*sin(time)\"}\n"
+                        "  - ambient: {intensity: 0.2}\n"
+                        "effects: {fog: {color: [0.5, 0.6, 0.7], density: \"0.1 + 0.08*sin(time)\"}}\n"
+                        "scene: {union: [{plane: {}}, {sphere: {radius: 0.5}, translate: [0, 0, 0.5]}]}\n");
+  Result r = sdfc("render " + s + " --frames 0:1 --fps 1 -o " + (dir_ / "l_%d.png").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  size_t builds = 0;
+  for (size_t at = r.err.find("kernel built"); at != std::string::npos; at = r.err.find("kernel built", at + 1)) ++builds;
+  EXPECT_EQ(builds, 1u) << r.err;
+  int w, h;
+  auto a = load_rgb8(dir_ / "l_0.png", &w, &h), b = load_rgb8(dir_ / "l_1.png", &w, &h);
+  ASSERT_FALSE(a.empty());
+  EXPECT_NE(a, b);
+}
+
+// --aov iterations: the escape iteration of the fractal a pixel hits, 0 on
+// other surfaces and misses.
+TEST_F(OfflineOutput, IterationsAov) {
+  std::string s = scene("render: {width: 64, height: 32}\ncamera: {position: [0, -4, 0], target: [0, 0, 0]}\n"
+                        "materials: {bulb: {color: [0.9, 0.8, 0.7]}}\n"
+                        "scene:\n  union:\n    - {mandelbulb: {power: 8, iterations: 9}, translate: [-1, 0, 0], material: bulb}\n"
+                        "    - {sphere: {radius: 0.6}, translate: [1.2, 0, 0]}\n");
+  Result r = sdfc("render " + s + " -q -o " + (dir_ / "img.png").string() + " --aov iterations,material");
+  ASSERT_EQ(r.code, 0) << r.err;
+  auto plane = [&](const char* aov) {
+    std::string bytes = slurp(dir_ / (std::string("img.") + aov + ".pfm"));
+    std::string header = "Pf\n64 32\n-1.0\n";
+    EXPECT_EQ(bytes.substr(0, header.size()), header) << aov;
+    std::vector<float> v(64 * 32, -99.0f);
+    if (bytes.size() == header.size() + v.size() * sizeof(float)) std::memcpy(v.data(), bytes.data() + header.size(), v.size() * sizeof(float));
+    return v;
+  };
+  std::vector<float> it = plane("iterations"), mat = plane("material");
+  int bulb = 0, other = 0, below_max = 0;
+  for (size_t i = 0; i < it.size(); ++i) {
+    ASSERT_EQ(it[i], std::floor(it[i])) << i;  // a count
+    if (mat[i] == 1.0f) {  // the bulb's material
+      ++bulb;
+      EXPECT_GE(it[i], 1.0f) << i;
+      EXPECT_LE(it[i], 9.0f) << i;
+      below_max += it[i] < 9.0f;
+    } else {
+      ++other;
+      EXPECT_EQ(it[i], 0.0f) << i << " material " << mat[i];
+    }
+  }
+  EXPECT_GT(bulb, 100);
+  EXPECT_GT(other, 100);
+  // The surface is where orbits start to escape: not every pixel runs the full count.
+  EXPECT_GT(below_max, bulb / 10) << below_max << " of " << bulb;
 }
 
 TEST_F(OfflineOutput, BadFrameOptionsAreUsageErrors) {

@@ -19,6 +19,9 @@ typedef int mask;
 #define M_TRUE ((mask)(-1))
 #define K(x) ((scalar)(x))  /* a literal in the kernel's precision, for builtin arguments */
 typedef struct { real x, y, z; } vec3;
+// the scene is static: no time argument
+#define TIME_PARAM
+#define TIME_ARG
 
 // ---- stdlib ----
 //! fn vec3_ops
@@ -168,7 +171,7 @@ inline vec3 shade_encode(vec3 c, real inv_gamma)
 }
 
 // ---- scene distance: the march evaluates this at every step ----
-real scene_dist(vec3 p)
+real scene_dist(TIME_PARAM vec3 p)
 {
     vec3 p0 = v3_sub(p, v3(0.5f, 2.0f, -0.15f));  // translate x=0.5 y=2 z=-0.15  (primitives.yaml:65)
     real d1 = sd_box(p0, v3(0.6f, 0.6f, 0.6f), 0.0f);  // box hx=0.6 hy=0.6 hz=0.6 radius=0  (primitives.yaml:63)
@@ -231,7 +234,7 @@ real scene_dist(vec3 p)
 }
 
 // ---- scene distance with material: evaluated once per hit ----
-real scene_dist_mat(vec3 p, real* mat)
+real scene_dist_mat(TIME_PARAM vec3 p, real* mat)
 {
     vec3 p0 = v3_sub(p, v3(0.5f, 2.0f, -0.15f));  // translate x=0.5 y=2 z=-0.15  (primitives.yaml:65)
     real d1 = sd_box(p0, v3(0.6f, 0.6f, 0.6f), 0.0f);  // box hx=0.6 hy=0.6 hz=0.6 radius=0  (primitives.yaml:63)
@@ -314,7 +317,7 @@ real scene_dist_mat(vec3 p, real* mat)
 // hit_eps times the pixel footprint at t (t * pixel_angle), so precision
 // follows the pixel size instead of a fixed epsilon. Lanes that run out of
 // steps count as misses. `*steps` returns the steps each lane took.
-inline mask march_sphere_trace(vec3 ro, vec3 rd, real t0, real t1, mask active,
+inline mask march_sphere_trace(TIME_PARAM vec3 ro, vec3 rd, real t0, real t1, mask active,
                                real pixel_angle, real hit_eps, real step_factor,
                                int max_steps, real* t_out, real* steps)
 {
@@ -322,7 +325,7 @@ inline mask march_sphere_trace(vec3 ro, vec3 rd, real t0, real t1, mask active,
     mask hit = active & !active;
     real n = 0.0f;
     for (int i = 0; i < max_steps && M_ANY(active); ++i) {
-        real d = scene_dist(v3_mad(ro, rd, t));
+        real d = scene_dist(TIME_ARG v3_mad(ro, rd, t));
         mask now_hit = active & (d < hit_eps * pixel_angle * fmax(t, K(1e-4f)));
         hit = hit | now_hit;
         active = active & !now_hit;
@@ -341,12 +344,12 @@ inline mask march_sphere_trace(vec3 ro, vec3 rd, real t0, real t1, mask active,
 //! class: helper
 // Four-tap tetrahedral gradient (seed 000 Eq. 5): the cheapest symmetric
 // finite difference. h follows the pixel footprint at the hit.
-inline vec3 normal_tetrahedral(vec3 p, real h)
+inline vec3 normal_tetrahedral(TIME_PARAM vec3 p, real h)
 {
-    real a = scene_dist(v3(p.x + h, p.y - h, p.z - h));
-    real b = scene_dist(v3(p.x - h, p.y - h, p.z + h));
-    real c = scene_dist(v3(p.x - h, p.y + h, p.z - h));
-    real d = scene_dist(v3(p.x + h, p.y + h, p.z + h));
+    real a = scene_dist(TIME_ARG v3(p.x + h, p.y - h, p.z - h));
+    real b = scene_dist(TIME_ARG v3(p.x - h, p.y - h, p.z + h));
+    real c = scene_dist(TIME_ARG v3(p.x - h, p.y + h, p.z - h));
+    real d = scene_dist(TIME_ARG v3(p.x + h, p.y + h, p.z + h));
     return v3_normalize(v3(a - b - c + d, -a - b + c + d, -a + b - c + d));
 }
 
@@ -384,7 +387,7 @@ void material_of(real id, vec3* albedo, real* specular, real* shininess)
 }
 
 // ---- lighting: v points from the surface to the eye ----
-vec3 shade_surface(vec3 p, vec3 n, vec3 v, real mat)
+vec3 shade_surface(TIME_PARAM vec3 p, vec3 n, vec3 v, real mat)
 {
     vec3 albedo;
     real specular, shininess;
@@ -403,7 +406,7 @@ vec3 shade_surface(vec3 p, vec3 n, vec3 v, real mat)
 }
 
 // ---- one ray segment: march, then shade the hit or the background ----
-vec3 sdfc_segment(vec3 ro, vec3 rd, mask active, real pixel_angle, real jitter,
+vec3 sdfc_segment(TIME_PARAM vec3 ro, vec3 rd, mask active, real pixel_angle, real jitter,
                   real* t_out, mask* hit_out, vec3* n_out, real* mat_out, real* steps_out)
 {
     // the scene is unbounded (it holds a plane): march the whole range
@@ -411,7 +414,7 @@ vec3 sdfc_segment(vec3 ro, vec3 rd, mask active, real pixel_angle, real jitter,
     real t1 = (real)(50.0f);
     (void)jitter;
     real t, steps;
-    mask hit = march_sphere_trace(ro, rd, t0, t1, active, pixel_angle, 0.5f, 1.0f, 256, &t, &steps);
+    mask hit = march_sphere_trace(TIME_ARG ro, rd, t0, t1, active, pixel_angle, 0.5f, 1.0f, 256, &t, &steps);
     vec3 color = shade_background(rd, v3(0.0f, 0.0f, 1.0f), v3(0.55f, 0.65f, 0.8f), v3(0.2f, 0.22f, 0.26f));
     vec3 n = v3_splat(0.0f);
     real mat = -1.0f;
@@ -420,12 +423,12 @@ vec3 sdfc_segment(vec3 ro, vec3 rd, mask active, real pixel_angle, real jitter,
         // shading runs once per packet with a hit, never inside the march
         vec3 pos = v3_mad(ro, rd, t);
         real h = fmax(pixel_angle * t * 0.5f, K(1e-6f));  // finite-difference step: half a pixel footprint
-        n = normal_tetrahedral(pos, h);
+        n = normal_tetrahedral(TIME_ARG pos, h);
         real id;
-        (void)scene_dist_mat(pos, &id);
+        (void)scene_dist_mat(TIME_ARG pos, &id);
         mat = SEL(mat, id, hit);
         (void)h;
-        vec3 lit = shade_surface(pos, n, v3_scale(rd, -1.0f), id);
+        vec3 lit = shade_surface(TIME_ARG pos, n, v3_scale(rd, -1.0f), id);
         color = v3_select(color, lit, hit);
     }
     *t_out = t; *hit_out = hit; *n_out = n; *mat_out = mat; *steps_out = steps;
@@ -433,12 +436,12 @@ vec3 sdfc_segment(vec3 ro, vec3 rd, mask active, real pixel_angle, real jitter,
 }
 
 // ---- the colour along one camera ray; the AOVs of its first hit ----
-vec3 sdfc_radiance(vec3 ro, vec3 rd, real pixel_angle, real jitter,
+vec3 sdfc_radiance(TIME_PARAM vec3 ro, vec3 rd, real pixel_angle, real jitter,
                    real* depth, vec3* normal, real* mat, real* steps)
 {
     real t;
     mask hit;
-    vec3 color = sdfc_segment(ro, rd, M_TRUE, pixel_angle, jitter, &t, &hit, normal, mat, steps);
+    vec3 color = sdfc_segment(TIME_ARG ro, rd, M_TRUE, pixel_angle, jitter, &t, &hit, normal, mat, steps);
     *depth = SEL((real)(-1.0f), t, hit);  // -1 marks a miss
     return color;
 }
@@ -465,7 +468,7 @@ __kernel void sdfc_render(__global float* out, __global const float* frame,
     real v = 1.0f - 2.0f * py / (real)((scalar)img_h);
     vec3 rd = v3_normalize(v3_add(forward, v3_add(v3_scale(right, u), v3_scale(up, v))));
     real jitter = 0.0f;
-    vec3 c = sdfc_radiance(eye, rd, pixel_angle, jitter, &depth, &normal, &mat, &steps);
+    vec3 c = sdfc_radiance(TIME_ARG eye, rd, pixel_angle, jitter, &depth, &normal, &mat, &steps);
     vec3 color = c;
     color = shade_encode(color, 0.45454547f);
 

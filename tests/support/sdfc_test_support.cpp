@@ -70,7 +70,7 @@ Probe::Probe(const ir::Module& m, int simd_width) {
   kernel_.emplace(program_->kernel("sdfc_probe"));
 }
 
-ProbeResult Probe::run(const std::vector<V3>& points) {
+ProbeResult Probe::run(const std::vector<V3>& points, double time) {
   const size_t w = static_cast<size_t>(emitted_.simd_width);
   const size_t n = points.size();
   const size_t padded = std::max<size_t>(w, (n + w - 1) / w * w);
@@ -90,6 +90,7 @@ ProbeResult Probe::run(const std::vector<V3>& points) {
   auto bm = make_buffer(ctx, CL_MEM_WRITE_ONLY, padded, nullptr);
   cl_mem args[6] = {bx.get(), by.get(), bz.get(), bd.get(), bdm.get(), bm.get()};
   for (unsigned i = 0; i < 6; ++i) kernel_->set_arg(i, args[i]);
+  kernel_->set_arg(6, static_cast<float>(time));
   size_t global = padded / w;
   check(clEnqueueNDRangeKernel(q, kernel_->get(), 1, nullptr, &global, nullptr, 0, nullptr, nullptr),
         "clEnqueueNDRangeKernel(sdfc_probe)");
@@ -130,6 +131,7 @@ std::vector<std::array<float, 6>> Probe::run_material(const std::vector<V3>& poi
   for (unsigned i = 0; i < 4; ++i) kernel.set_arg(i, args[i]);
   cl_int planes = static_cast<cl_int>(padded);
   kernel.set_arg(4, planes);
+  kernel.set_arg(5, 0.0f);  // probe_time: the material probes run static scenes
   size_t global = padded / w;
   check(clEnqueueNDRangeKernel(q, kernel.get(), 1, nullptr, &global, nullptr, 0, nullptr, nullptr),
         "clEnqueueNDRangeKernel(sdfc_probe_material)");

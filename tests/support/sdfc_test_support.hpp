@@ -50,7 +50,8 @@ class Probe {
   // The points are passed as floats (the probe's ABI); callers should
   // evaluate the reference at the same float-rounded coordinates
   // (see to_float_point).
-  ProbeResult run(const std::vector<V3>& points);
+  // `time`: the frame time of an animated scene (ignored by a static one).
+  ProbeResult run(const std::vector<V3>& points, double time = 0);
   // The blended material (sdfc_probe_material, emitted only for scenes with
   // a smooth blend of differing materials): per point albedo r, g, b,
   // specular, shininess, reflectivity.

@@ -5,6 +5,9 @@
 
 #include <string>
 
+#include "sdfc/expr/expr.hpp"
+#include "sdfc/ir/graph.hpp"
+#include "sdfc/ir/module.hpp"
 #include "sdfc/ir/render_plan.hpp"
 
 namespace sdfc::codegen::detail {
@@ -25,6 +28,34 @@ class Literals {
  private:
   ir::Precision p_;
 };
+
+// Parameter i of a node: a literal, or for an animated parameter its
+// expression of `time` (a scalar the scene functions receive).
+// A value that may be animated: the literal v, or e in OpenCL C.
+inline std::string animated(const expr::ExprPtr& e, double v, const Literals& lit) {
+  if (!e) return lit.real(v);
+  return expr::to_opencl(
+      e, [](std::string_view) { return std::string("time"); }, [&](double x) { return lit.real(x); });
+}
+
+inline std::string param(const ir::Node& n, size_t i, const Literals& lit) {
+  return animated(n.animation(i), n.params[i], lit);
+}
+
+// Does the kernel need the frame time (animated geometry, lights or fog)?
+inline bool uses_time(const ir::Module& m) {
+  if (m.graph->animated(m.root) || m.plan.effects.fog.density_anim) return true;
+  for (const auto& l : m.plan.lights)
+    if (l.intensity_anim || l.position_anim[0] || l.position_anim[1] || l.position_anim[2]) return true;
+  return false;
+}
+
+// Parameters i, i+1, i+2 as a vec3.
+inline std::string param3(const ir::Node& n, size_t i, const Literals& lit) {
+  if (!n.animation(i) && !n.animation(i + 1) && !n.animation(i + 2))
+    return lit.vec3({n.params[i], n.params[i + 1], n.params[i + 2]});
+  return "v3(" + param(n, i, lit) + ", " + param(n, i + 1, lit) + ", " + param(n, i + 2, lit) + ")";
+}
 
 class CodeWriter {
  public:

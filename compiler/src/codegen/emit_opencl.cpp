@@ -78,7 +78,7 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
   for (const auto& l : m.plan.lights) any_shadows |= l.shadows != ir::Light::Shadows::None;
   CodeWriter w;
   w.line("// ---- one ray segment: march, then shade the hit or the background ----");
-  w.line(fmt::format("vec3 sdfc_segment(vec3 ro, vec3 rd, mask active, real pixel_angle, real jitter,{}",
+  w.line(fmt::format("vec3 sdfc_segment(TIME_PARAM vec3 ro, vec3 rd, mask active, real pixel_angle, real jitter,{}",
                      fx.glow.enabled ? " real glow_weight," : ""));
   const bool refl_out = blended && fx.reflections.depth > 0;
   w.line(fmt::format("                  real* t_out, mask* hit_out, vec3* n_out, real* mat_out, real* steps_out{})",
@@ -107,7 +107,7 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
   }
   if (s.dither) {
     w.line("// render.dither: a random fraction of the first step against banding");
-    w.line(fmt::format("t0 = t0 + jitter * {} * fmax(scene_dist(v3_mad(ro, rd, t0)), K(0.0f));", lit.real(s.step_factor)));
+    w.line(fmt::format("t0 = t0 + jitter * {} * fmax(scene_dist(TIME_ARG v3_mad(ro, rd, t0)), K(0.0f));", lit.real(s.step_factor)));
   } else {
     w.line("(void)jitter;");
   }
@@ -116,17 +116,17 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
     used.insert("march_sphere_trace_refined");
     w.line("// render.refine: bisection - bracket the surface after the hit and bisect it");
     w.line("real closest;");
-    w.line(fmt::format("mask hit = march_sphere_trace_refined(ro, rd, t0, t1, active, pixel_angle, {}, {}, {}, &t, &steps, &closest);",
+    w.line(fmt::format("mask hit = march_sphere_trace_refined(TIME_ARG ro, rd, t0, t1, active, pixel_angle, {}, {}, {}, &t, &steps, &closest);",
                        lit.real(s.hit_epsilon), lit.real(s.step_factor), s.max_steps));
     if (!fx.glow.enabled) w.line("(void)closest;");
   } else if (fx.glow.enabled) {
     used.insert("march_sphere_trace_closest");
     w.line("real closest;");
-    w.line(fmt::format("mask hit = march_sphere_trace_closest(ro, rd, t0, t1, active, pixel_angle, {}, {}, {}, &t, &steps, &closest);",
+    w.line(fmt::format("mask hit = march_sphere_trace_closest(TIME_ARG ro, rd, t0, t1, active, pixel_angle, {}, {}, {}, &t, &steps, &closest);",
                        lit.real(s.hit_epsilon), lit.real(s.step_factor), s.max_steps));
   } else {
     used.insert("march_sphere_trace");
-    w.line(fmt::format("mask hit = march_sphere_trace(ro, rd, t0, t1, active, pixel_angle, {}, {}, {}, &t, &steps);",
+    w.line(fmt::format("mask hit = march_sphere_trace(TIME_ARG ro, rd, t0, t1, active, pixel_angle, {}, {}, {}, &t, &steps);",
                        lit.real(s.hit_epsilon), lit.real(s.step_factor), s.max_steps));
   }
   used.insert("shade_background");
@@ -149,25 +149,25 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
   } else {
     const char* normal_fn = s.normals == ir::NormalMethod::Central ? "normal_central" : "normal_tetrahedral";
     used.insert(normal_fn);
-    w.line(fmt::format("n = {}(pos, h);", normal_fn));
+    w.line(fmt::format("n = {}(TIME_ARG pos, h);", normal_fn));
   }
   std::string extra;
   if (blended) {
     w.line("real id;");
     w.line("mat_record look;  // the materials mixed across smooth blends");
-    w.line("id = scene_material(pos, &look);");
+    w.line("id = scene_material(TIME_ARG pos, &look);");
     if (refl_out) w.line("refl = SEL(refl, look.reflectivity, hit);");
   } else if (auto uni = uniform_material(m)) {
     w.line(fmt::format("real id = {};  // the scene's one material: no distance evaluation needed", lit.typed(*uni)));
   } else {
     w.line("real id;");
-    w.line("(void)scene_dist_mat(pos, &id);");
+    w.line("(void)scene_dist_mat(TIME_ARG pos, &id);");
   }
   w.line("mat = SEL(mat, id, hit);");
   bool traps = false;
   for (const auto& md : m.plan.materials) traps = traps || !md.trap_palette.empty();
   if (traps && !blended) {
-    w.line("real trap = scene_trap(pos);  // orbit-trap colour, once per hit");
+    w.line("real trap = scene_trap(TIME_ARG pos);  // orbit-trap colour, once per hit");
     extra += ", trap";
   }
   if (fx.ambient_occlusion.enabled) {
@@ -175,7 +175,7 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
     if (ao.method == ir::AmbientOcclusion::Method::NormalSamples) {
       used.insert("ao_normal_samples");
       w.line(fmt::format("// effects.ambient_occlusion: {} probes along the normal", ao.samples));
-      w.line(fmt::format("real occlusion = ao_normal_samples(pos, n, {}, {}, {});", ao.samples, lit.real(ao.distance),
+      w.line(fmt::format("real occlusion = ao_normal_samples(TIME_ARG pos, n, {}, {}, {});", ao.samples, lit.real(ao.distance),
                          lit.real(ao.strength)));
     } else {
       used.insert("ao_step_count");
@@ -186,7 +186,7 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
   }
   if (any_shadows) extra += ", h, hit";
   if (!any_shadows) w.line("(void)h;");
-  w.line(fmt::format("vec3 lit = shade_surface(pos, n, v3_scale(rd, -1.0f), {}{});",
+  w.line(fmt::format("vec3 lit = shade_surface(TIME_ARG pos, n, v3_scale(rd, -1.0f), {}{});",
                      blended ? "look.albedo, look.specular, look.shininess" : "id", extra));
   w.line("color = v3_select(color, lit, hit);");
   w.close("}");
@@ -206,10 +206,10 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
     if (f.height_falloff > 0) {
       used.insert("fog_height");
       w.line(fmt::format("color = fog_height(color, {}, ro, rd, fog_t, {}, {}, {}, {});", lit.vec3(f.color),
-                         lit.vec3(m.plan.camera.up), lit.real(f.density), lit.real(f.height_falloff), lit.real(f.base_height)));
+                         lit.vec3(m.plan.camera.up), detail::animated(f.density_anim, f.density, lit), lit.real(f.height_falloff), lit.real(f.base_height)));
     } else {
       used.insert("fog_exponential");
-      w.line(fmt::format("color = fog_exponential(color, {}, fog_t, {});", lit.vec3(f.color), lit.real(f.density)));
+      w.line(fmt::format("color = fog_exponential(color, {}, fog_t, {});", lit.vec3(f.color), detail::animated(f.density_anim, f.density, lit)));
     }
   }
   w.line(fmt::format("*t_out = t; *hit_out = hit; *n_out = n; *mat_out = mat; *steps_out = steps;{}",
@@ -227,7 +227,7 @@ std::string radiance_function(const ir::Module& m, std::set<std::string>& used, 
   const bool glow = m.plan.effects.glow.enabled;
   CodeWriter w;
   w.line("// ---- the colour along one camera ray; the AOVs of its first hit ----");
-  w.line("vec3 sdfc_radiance(vec3 ro, vec3 rd, real pixel_angle, real jitter,");
+  w.line("vec3 sdfc_radiance(TIME_PARAM vec3 ro, vec3 rd, real pixel_angle, real jitter,");
   w.line("                   real* depth, vec3* normal, real* mat, real* steps)");
   w.open("{");
   w.line("real t;");
@@ -236,7 +236,7 @@ std::string radiance_function(const ir::Module& m, std::set<std::string>& used, 
   const bool refl = blended && depth > 0;
   if (refl) w.line("real refl;");
   std::string refl_arg = refl ? ", &refl" : "";
-  w.line(fmt::format("vec3 color = sdfc_segment(ro, rd, M_TRUE, pixel_angle, jitter,{} &t, &hit, normal, mat, steps{});",
+  w.line(fmt::format("vec3 color = sdfc_segment(TIME_ARG ro, rd, M_TRUE, pixel_angle, jitter,{} &t, &hit, normal, mat, steps{});",
                      glow ? " 1.0f," : "", refl_arg));
   w.line("*depth = SEL((real)(-1.0f), t, hit);  // -1 marks a miss");
   if (depth > 0) {
@@ -261,7 +261,7 @@ std::string radiance_function(const ir::Module& m, std::set<std::string>& used, 
     w.line("ro = v3_mad(p, n, 2.0f * footprint);");
     w.line("rd = v3_normalize(v3_mad(rd, n, -2.0f * v3_dot(rd, n)));");
     w.line("real s;");
-    w.line(fmt::format("seg = sdfc_segment(ro, rd, alive, pixel_angle, (real)(0.0f),{} &t, &hit, &n, &id, &s{});",
+    w.line(fmt::format("seg = sdfc_segment(TIME_ARG ro, rd, alive, pixel_angle, (real)(0.0f),{} &t, &hit, &n, &id, &s{});",
                        glow ? " 0.0f," : "", refl_arg));
     w.line("alive = alive & hit;");
     w.close("}");
@@ -292,7 +292,8 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
   w.line("vec3 eye = FRAME3(0), forward = FRAME3(6), right = FRAME3(12), up = FRAME3(18);");
   w.line("#undef FRAME3");
   w.line("const scalar pixel_angle = (scalar)frame[24];");
-  w.line("real depth, mat, steps;");
+  if (detail::uses_time(m)) w.line("const scalar time = (scalar)frame[25];  // the scene is animated");
+  w.line(aovs ? "real depth, mat, steps, iterations;" : "real depth, mat, steps;");
   w.line("vec3 normal;");
   std::string post;  // per-sample exposure and tone curve
   if (s.exposure != 0) post += fmt::format("c = v3_scale(c, {});  // render.exposure: {} stop(s)\n", lit.real(std::exp2(s.exposure)), s.exposure);
@@ -327,7 +328,9 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
     } else {
       w.line("real jitter = 0.0f;");
     }
-    w.line("vec3 c = sdfc_radiance(eye, rd, pixel_angle, jitter, &depth, &normal, &mat, &steps);");
+    w.line("vec3 c = sdfc_radiance(TIME_ARG eye, rd, pixel_angle, jitter, &depth, &normal, &mat, &steps);");
+    if (aovs)
+      w.line("iterations = SEL((real)(0.0f), scene_iterations(TIME_ARG v3_mad(eye, rd, fmax(depth, K(0.0f)))), depth >= 0.0f);");
     emit_post();
     w.line("vec3 color = c;");
   } else {
@@ -372,11 +375,13 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
     }
     w.line("real d_s, mat_s, steps_s;");
     w.line("vec3 n_s;");
-    w.line("vec3 c = sdfc_radiance(ro, rd, pixel_angle, jitter, &d_s, &n_s, &mat_s, &steps_s);");
+    w.line("vec3 c = sdfc_radiance(TIME_ARG ro, rd, pixel_angle, jitter, &d_s, &n_s, &mat_s, &steps_s);");
     emit_post();
     w.line("color = v3_add(color, c);");
     w.line("// the AOVs come from the first sample of the pass");
     w.line("if (si == s_first) { depth = d_s; normal = n_s; mat = mat_s; steps = steps_s; }");
+    if (aovs)
+      w.line("if (si == s_first) iterations = SEL((real)(0.0f), scene_iterations(TIME_ARG v3_mad(ro, rd, fmax(d_s, K(0.0f)))), d_s >= 0.0f);");
     w.close("}");
     w.line("color = v3_scale(color, 1.0f / (scalar)s_count);");
   }
@@ -390,12 +395,13 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
   w.line("STORE_PACKET(color.z, o + 2 * plane, out_stride);");
   w.line("STORE_PACKET(depth, o + 3 * plane, out_stride);");
   if (aovs) {
-    w.line("// AOVs: normal (0 on a miss), march steps, material id (-1 on a miss)");
+    w.line("// AOVs: normal (0 on a miss), march steps, material id (-1 on a miss), fractal iterations (0 off fractals)");
     w.line("STORE_PACKET(normal.x, o + 4 * plane, out_stride);");
     w.line("STORE_PACKET(normal.y, o + 5 * plane, out_stride);");
     w.line("STORE_PACKET(normal.z, o + 6 * plane, out_stride);");
     w.line("STORE_PACKET(steps, o + 7 * plane, out_stride);");
     w.line("STORE_PACKET(mat, o + 8 * plane, out_stride);");
+    w.line("STORE_PACKET(iterations, o + 9 * plane, out_stride);");
   } else {
     w.line("(void)normal; (void)mat; (void)steps;");
   }
@@ -405,15 +411,15 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
 
 // The blended material at given points (tests): albedo r, g, b, specular,
 // shininess, reflectivity, each in its own plane of n floats.
-std::string probe_material_kernel() {
-  return R"(// ---- probe: the blended material at given points (tests and tools) ----
+std::string probe_material_kernel(bool animated) {
+  return std::string(R"(// ---- probe: the blended material at given points (tests and tools) ----
 __kernel void sdfc_probe_material(__global const float* px, __global const float* py, __global const float* pz,
-                                  __global float* out, const int n)
+                                  __global float* out, const int n, const float probe_time)
 {
     const int i = get_global_id(0) * SDFC_WIDTH;
     vec3 p = v3(LOAD_REAL(px + i), LOAD_REAL(py + i), LOAD_REAL(pz + i));
-    mat_record r;
-    (void)scene_material(p, &r);
+)") + (animated ? "    const scalar time = (scalar)probe_time;\n" : "    (void)probe_time;\n") + R"(    mat_record r;
+    (void)scene_material(TIME_ARG p, &r);
     STORE_REAL(r.albedo.x, out + i);
     STORE_REAL(r.albedo.y, out + n + i);
     STORE_REAL(r.albedo.z, out + 2 * n + i);
@@ -424,16 +430,17 @@ __kernel void sdfc_probe_material(__global const float* px, __global const float
 )";
 }
 
-std::string probe_kernel() {
-  return R"(// ---- probe: the scene distance at given points (tests and tools) ----
+std::string probe_kernel(bool animated) {
+  return std::string(R"(// ---- probe: the scene distance at given points and time (tests and tools) ----
 __kernel void sdfc_probe(__global const float* px, __global const float* py, __global const float* pz,
-                         __global float* out_d, __global float* out_d_mat, __global float* out_mat)
+                         __global float* out_d, __global float* out_d_mat, __global float* out_mat,
+                         const float probe_time)
 {
     const int i = get_global_id(0) * SDFC_WIDTH;
     vec3 p = v3(LOAD_REAL(px + i), LOAD_REAL(py + i), LOAD_REAL(pz + i));
-    real mat;
-    STORE_REAL(scene_dist(p), out_d + i);
-    STORE_REAL(scene_dist_mat(p, &mat), out_d_mat + i);
+)") + (animated ? "    const scalar time = (scalar)probe_time;\n" : "    (void)probe_time;\n") + R"(    real mat;
+    STORE_REAL(scene_dist(TIME_ARG p), out_d + i);
+    STORE_REAL(scene_dist_mat(TIME_ARG p, &mat), out_d_mat + i);
     STORE_REAL(mat, out_mat + i);
 }
 )";
@@ -453,6 +460,7 @@ EmittedKernel emit_opencl(const ir::Module& m, const EmitOptions& opt) {
   Literals lit(m.plan.march.precision);
   std::set<std::string> used;
   std::string scene = detail::emit_scene_functions(m, lit, used);
+  if (opt.aovs) scene += "\n" + detail::emit_scene_iterations(m, lit, used);
   if (m.plan.march.normals == ir::NormalMethod::Dual) scene += "\n" + detail::emit_scene_gradient(m, lit, used);
   std::optional<detail::RayBounds> bounds = march_bounds(m);
   const bool blended = detail::needs_material_blend(m);
@@ -460,15 +468,15 @@ EmittedKernel emit_opencl(const ir::Module& m, const EmitOptions& opt) {
   if (blended) shading += "\n" + detail::emit_scene_material(m, lit, used);
   std::string kernel = segment_function(m, lit, used, blended) + "\n" + radiance_function(m, used, blended) + "\n" +
                        render_kernel(m, lit, used, opt.aovs);
-  if (opt.probe_kernel) kernel += "\n" + probe_kernel();
-  if (opt.probe_kernel && blended) kernel += "\n" + probe_material_kernel();
+  if (opt.probe_kernel) kernel += "\n" + probe_kernel(detail::uses_time(m));
+  if (opt.probe_kernel && blended) kernel += "\n" + probe_material_kernel(detail::uses_time(m));
 
   auto fns = StdlibManifest::instance().closure({used.begin(), used.end()});
   EmittedKernel k;
   k.simd_width = wd;
   k.packet_rows = rows;
   k.planes = {"r", "g", "b", "depth"};
-  if (opt.aovs) k.planes.insert(k.planes.end(), {"normal_x", "normal_y", "normal_z", "steps", "material"});
+  if (opt.aovs) k.planes.insert(k.planes.end(), {"normal_x", "normal_y", "normal_z", "steps", "material", "iterations"});
   k.frame_floats = kFrameFloats;
   std::string before, after;
   for (const auto* f : fns) {
@@ -483,7 +491,7 @@ EmittedKernel emit_opencl(const ir::Module& m, const EmitOptions& opt) {
                      ir::count_nodes(m));
   src += "// stdlib functions:";
   for (const auto& n : k.stdlib_functions) src += " " + n;
-  src += "\n\n" + detail::prelude(wd, rows, m.plan.march.precision);
+  src += "\n\n" + detail::prelude(wd, rows, m.plan.march.precision, detail::uses_time(m));
   src += "\n// ---- stdlib ----" + before + "\n";
   src += scene + "\n";
   if (!after.empty()) src += "// ---- stdlib that calls the scene ----" + after + "\n";

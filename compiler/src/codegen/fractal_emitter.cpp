@@ -69,7 +69,7 @@ bool is_fractal(const ir::Node& n) { return ir::info(n.kind).category == ir::Cat
 std::string emit_fractal(const ir::Node& n, const std::string& p, const Literals& lit, CodeWriter& w,
                          std::set<std::string>& used) {
   const auto& q = n.params;
-  auto r = [&](size_t i) { return lit.real(q[i]); };
+  auto r = [&](size_t i) { return param(n, i, lit); };
   auto call = [&](const char* fn) {
     used.insert(fn);
     return std::string(fn);
@@ -77,7 +77,13 @@ std::string emit_fractal(const ir::Node& n, const std::string& p, const Literals
   switch (n.kind) {
     case Kind::Mandelbulb: {
       std::string radius = lit.real(ir::mandelbulb_set_radius(q[0]));
-      int ipower = integer_power(q[0]) ? int(q[0]) : 0;  // > 0: the trig-free power
+      // An animated power takes the trig formula (the trig-free one is
+      // specialised to one whole power) and the radius of its set per frame,
+      // as ir::mandelbulb_set_radius computes it.
+      if (n.animation(0))
+        radius = fmt::format("({0} <= {1} ? {2} : fmin({2}, pow({3}, {4} / ({0} - {4}))))", r(0), lit.real(1.25),
+                             lit.real(4.0), lit.real(2.0), lit.real(1.0));
+      int ipower = integer_power(q[0]) && !n.animation(0) ? int(q[0]) : 0;  // > 0: the trig-free power
       auto method = ir::DeMethod(int(q[3]));
       if (method != ir::DeMethod::Analytic)
         return fmt::format("{}({}, {}, {}, {}, {}, {}, {})  /* de: {} */", call("de_mandelbulb_numeric"), p, r(0),
@@ -184,12 +190,12 @@ std::string hybrid_trap(const ir::Node& n, const std::string& p, const Literals&
 std::string emit_fractal_trap(const ir::Node& n, const std::string& p, const Literals& lit, CodeWriter& w,
                               std::set<std::string>& used, bool iteration) {
   const auto& q = n.params;
-  auto r = [&](size_t i) { return lit.real(q[i]); };
+  auto r = [&](size_t i) { return param(n, i, lit); };
   if (n.kind == Kind::Hybrid) return hybrid_trap(n, p, lit, w, used, iteration);
   std::string call;
   switch (n.kind) {
     case Kind::Mandelbulb:
-      if (integer_power(q[0])) {  // trig-free, like the distance
+      if (integer_power(q[0]) && !n.animation(0)) {  // trig-free, like the distance
         call = fmt::format("trap_mandelbulb_int({}, {}, {}, {}, 0, v3_splat(0.0f)", p, int(q[0]), int(q[1]), r(2));
         used.insert("trap_mandelbulb_int");
       } else {
@@ -198,7 +204,7 @@ std::string emit_fractal_trap(const ir::Node& n, const std::string& p, const Lit
       }
       break;
     case Kind::Juliabulb:
-      if (integer_power(q[0])) {
+      if (integer_power(q[0]) && !n.animation(0)) {
         call = fmt::format("trap_mandelbulb_int({}, {}, {}, {}, 1, {}", p, int(q[0]), int(q[1]), r(2),
                            lit.vec3({q[3], q[4], q[5]}));
         used.insert("trap_mandelbulb_int");
@@ -240,6 +246,35 @@ std::string emit_fractal_trap(const ir::Node& n, const std::string& p, const Lit
   w.line(fmt::format("real {};", it));
   w.line(fmt::format("real {} = {}, &{});", t, call, it));
   return iteration ? it : t;
+}
+
+std::string emit_fractal_iterations(const ir::Node& n, const std::string& p, const Literals& lit,
+                                    std::set<std::string>& used) {
+  const auto& q = n.params;
+  auto r = [&](size_t i) { return param(n, i, lit); };
+  auto call = [&](const char* fn) {
+    used.insert(fn);
+    return std::string(fn);
+  };
+  switch (n.kind) {
+    case Kind::Mandelbulb:
+      return fmt::format("{}({}, {}, {}, {}, 0, v3_splat(0.0f))", call("iter_mandelbulb"), p, r(0), int(q[1]), r(2));
+    case Kind::Juliabulb:
+      return fmt::format("{}({}, {}, {}, {}, 1, {})", call("iter_mandelbulb"), p, r(0), int(q[1]), r(2),
+                         lit.vec3({q[3], q[4], q[5]}));
+    case Kind::Mandelbox:
+      return fmt::format("{}({}, {}, {}, {}, {}, {}, {}, {}, {})", call("iter_mandelbox"), p, r(0), lit.real(q[1] * q[1]),
+                         lit.real(q[2] * q[2]), r(3), int(q[4]), int(q[5]), lit.vec3({q[6], q[7], q[8]}),
+                         lit.vec3({q[9], q[10], q[11]}));
+    case Kind::QuaternionJulia:
+      return fmt::format("{}({}, {}, {}, {}, {}, {}, {})", call("iter_quaternion_julia"), p, r(6), r(0),
+                         lit.vec3({q[1], q[2], q[3]}), int(q[4]), int(q[5]), r(7));
+    case Kind::Menger:
+    case Kind::Sierpinski:
+    case Kind::Hybrid: return lit.typed(q[0]);
+    case Kind::Kifs: return lit.typed(q[5]);
+    default: return "";
+  }
 }
 
 }  // namespace sdfc::codegen::detail

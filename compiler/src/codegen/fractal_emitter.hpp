@@ -22,5 +22,10 @@ std::string emit_fractal(const ir::Node& n, const std::string& p, const Literals
 // statements it needs to `w`; "" for kinds without one.
 std::string emit_fractal_trap(const ir::Node& n, const std::string& p, const Literals& lit, CodeWriter& w,
                               std::set<std::string>& used, bool iteration);
+// The fractal's iteration count at p for the iterations AOV: the escape
+// iteration of escape-time fractals, the configured count of folding ones
+// (which never escape) and of hybrids.
+std::string emit_fractal_iterations(const ir::Node& n, const std::string& p, const Literals& lit,
+                                    std::set<std::string>& used);
 
 }  // namespace sdfc::codegen::detail

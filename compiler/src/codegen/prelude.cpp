@@ -8,7 +8,7 @@
 
 namespace sdfc::codegen::detail {
 
-std::string prelude(int width, int rows, ir::Precision precision) {
+std::string prelude(int width, int rows, ir::Precision precision, bool animated) {
   bool dbl = precision == ir::Precision::Double;
   std::string scalar = dbl ? "double" : "float";
   std::string m = dbl ? "long" : "int";  // vector comparisons give lanes as wide as the operands
@@ -68,6 +68,11 @@ std::string prelude(int width, int rows, ir::Precision precision) {
   out += "#define M_TRUE ((mask)(-1))\n";
   out += "#define K(x) ((scalar)(x))  /* a literal in the kernel's precision, for builtin arguments */\n";
   out += "typedef struct { real x, y, z; } vec3;\n";
+  if (animated)
+    out += "// the scene is animated: the frame time is the first argument of every function that evaluates it\n"
+           "#define TIME_PARAM const scalar time,\n#define TIME_ARG time,\n";
+  else
+    out += "// the scene is static: no time argument\n#define TIME_PARAM\n#define TIME_ARG\n";
   return out;
 }
 

@@ -5,5 +5,7 @@
 
 namespace sdfc::codegen::detail {
 // rows: pixel rows per packet (width / rows pixels per row).
-std::string prelude(int width, int rows, ir::Precision precision);
+// animated: the scene uses time, which then reaches every function that
+// evaluates the scene as a first argument (TIME_PARAM / TIME_ARG).
+std::string prelude(int width, int rows, ir::Precision precision, bool animated);
 }

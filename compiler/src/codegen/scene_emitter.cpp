@@ -51,14 +51,17 @@ class SceneEmitter {
   // trap of the nearest fractal (chosen by the same rules as the material).
   // blend: emit scene_material instead, which carries a material record
   // (mat_record) up the tree and mixes it at smooth blends.
+  // iterations: scene_iterations, tracking the nearest fractal's iteration
+  // count (the AOV) like scene_trap tracks its trap.
   SceneEmitter(const ir::Module& m, const Literals& lit, bool with_mat, std::set<std::string>& used, bool trap = false,
-               bool blend = false)
+               bool blend = false, bool iterations = false)
       : g_(*m.graph),
         plan_(m.plan),
         lit_(lit),
-        with_mat_(with_mat || trap || blend),
-        trap_(trap),
+        with_mat_(with_mat || trap || blend || iterations),
+        trap_(trap || iterations),
         blend_(blend),
+        iterations_(iterations),
         used_(used),
         file_(m.source_name) {
     if (trap || blend) find_iteration_fractals(m, m.root, 0);
@@ -67,7 +70,7 @@ class SceneEmitter {
   std::string function(NodeId root) {
     if (blend_) {
       call("mat_record");
-      w_.line("real scene_material(vec3 p, mat_record* out)");
+      w_.line("real scene_material(TIME_PARAM vec3 p, mat_record* out)");
       w_.open("{");
       Value v = emit(root, "p");
       w_.line("(void)" + v.d + ";");
@@ -76,7 +79,10 @@ class SceneEmitter {
       w_.close("}");
       return w_.take();
     }
-    w_.line(trap_ ? "real scene_trap(vec3 p)" : with_mat_ ? "real scene_dist_mat(vec3 p, real* mat)" : "real scene_dist(vec3 p)");
+    w_.line(iterations_ ? "real scene_iterations(TIME_PARAM vec3 p)"
+            : trap_     ? "real scene_trap(TIME_PARAM vec3 p)"
+            : with_mat_ ? "real scene_dist_mat(TIME_PARAM vec3 p, real* mat)"
+                        : "real scene_dist(TIME_PARAM vec3 p)");
     w_.open("{");
     Value v = emit(root, "p");
     if (trap_) {
@@ -103,8 +109,11 @@ class SceneEmitter {
   std::string describe(const ir::Node& n) const {
     const ir::KindInfo& k = ir::info(n.kind);
     std::string s(k.name);
-    for (size_t i = 0; i < n.params.size() && n.kind != Kind::Rotate; ++i)
-      s += fmt::format(" {}={}", k.params[i], n.params[i]);
+    for (size_t i = 0; i < n.params.size() && n.kind != Kind::Rotate; ++i) {
+      if (const auto& e = n.animation(i)) s += fmt::format(" {}=\"{}\"", k.params[i], expr::to_string(e));
+      else s += fmt::format(" {}={}", k.params[i], n.params[i]);
+    }
+    if (n.kind == Kind::Rotate && n.animated()) s += " (animated)";
     return s + where(n);
   }
 
@@ -177,21 +186,21 @@ class SceneEmitter {
     const ir::Node& n = g_.node(id);
     leaf_p_ = p;  // for record(): leaves do not recurse, so this is still theirs
     const auto& q = n.params;
-    auto r = [&](size_t i) { return lit_.real(q[i]); };
+    auto r = [&](size_t i) { return param(n, i, lit_); };
+    auto v = [&](size_t i) { return param3(n, i, lit_); };
     switch (n.kind) {
       case Kind::Sphere: return leaf(n, fmt::format("{}({}, {})", call("sd_sphere"), p, r(0)));
       case Kind::Box:
-        return leaf(n, fmt::format("{}({}, {}, {})", call("sd_box"), p, lit_.vec3({q[0], q[1], q[2]}), r(3)));
+        return leaf(n, fmt::format("{}({}, {}, {})", call("sd_box"), p, v(0), r(3)));
       case Kind::Torus: return leaf(n, fmt::format("{}({}, {}, {})", call("sd_torus"), p, r(0), r(1)));
       case Kind::Plane:
-        return leaf(n, fmt::format("{}({}, {}, {})", call("sd_plane"), p, lit_.vec3({q[0], q[1], q[2]}), r(3)));
+        return leaf(n, fmt::format("{}({}, {}, {})", call("sd_plane"), p, v(0), r(3)));
       case Kind::Cylinder: return leaf(n, fmt::format("{}({}, {}, {})", call("sd_cylinder"), p, r(0), r(1)));
       case Kind::Capsule:
-        return leaf(n, fmt::format("{}({}, {}, {}, {})", call("sd_capsule"), p, lit_.vec3({q[0], q[1], q[2]}),
-                                   lit_.vec3({q[3], q[4], q[5]}), r(6)));
+        return leaf(n, fmt::format("{}({}, {}, {}, {})", call("sd_capsule"), p, v(0), v(3), r(6)));
       case Kind::Translate: {
         std::string p2 = var("p");
-        w_.line(fmt::format("vec3 {} = v3_sub({}, {});  // {}", p2, p, lit_.vec3({q[0], q[1], q[2]}), describe(n)));
+        w_.line(fmt::format("vec3 {} = v3_sub({}, {});  // {}", p2, p, v(0), describe(n)));
         return emit(n.children[0], p2);
       }
       case Kind::Rotate: {
@@ -203,7 +212,8 @@ class SceneEmitter {
       }
       case Kind::Scale: {
         std::string p2 = var("p");
-        w_.line(fmt::format("vec3 {} = v3_scale({}, {});  // {}", p2, p, lit_.real(1.0 / q[0]), describe(n)));
+        std::string inv = n.animated() ? fmt::format("{} / {}", lit_.real(1.0), r(0)) : lit_.real(1.0 / q[0]);
+        w_.line(fmt::format("vec3 {} = v3_scale({}, {});  // {}", p2, p, inv, describe(n)));
         Value c = emit(n.children[0], p2);
         std::string d = var("d");
         w_.line(fmt::format("real {} = {} * {};  // undo the scale on the distance", d, c.d, r(0)));
@@ -310,7 +320,8 @@ class SceneEmitter {
         Value c = emit(n.children[0], p);
         const expr::ExprPtr& e = g_.expressions.at(size_t(q[0]));
         std::string body = expr::to_opencl(
-            e, [&](std::string_view v) { return p + "." + std::string(v); }, [&](double x) { return lit_.typed(x); });
+            e, [&](std::string_view var) { return var == "time" ? std::string("time") : p + "." + std::string(var); },
+            [&](double x) { return lit_.typed(x); });
         std::string d = var("d");
         w_.line(fmt::format("real {} = {} + {};  // displace {}{}", d, c.d, body, expr::to_string(e), where(n)));
         return with_d(c, d);
@@ -320,11 +331,15 @@ class SceneEmitter {
         if (is_fractal(n)) {
           std::string expr = emit_fractal(n, p, lit_, w_, used_);
           Value v = leaf(n, expr);
-          std::string trap = trap_ ? emit_fractal_trap(n, p, lit_, w_, used_, iteration_.count(id) > 0) : "";
+          std::string trap = iterations_ ? emit_fractal_iterations(n, p, lit_, used_)
+                             : trap_     ? emit_fractal_trap(n, p, lit_, w_, used_, iteration_.count(id) > 0)
+                                         : "";
           if (!trap.empty()) {
-            v.mat = var("trap");
+            v.mat = var(iterations_ ? "it" : "trap");
             w_.line(fmt::format("real {} = {};  // {}", v.mat, trap,
-                                iteration_.count(id) ? "smooth iteration count (its material's source)" : "orbit trap"));
+                                iterations_            ? "iteration count"
+                                : iteration_.count(id) ? "smooth iteration count (its material's source)"
+                                                       : "orbit trap"));
           }
           return v;
         }
@@ -354,7 +369,7 @@ class SceneEmitter {
           break;
         case Kind::SmoothUnion:
           if (track) w_.line(fmt::format("{} = SEL({}, {}, {} < {});", m, m, k.mat, k.d, d));
-          w_.line(fmt::format("{} = {}({}, {}, {});", d, call("op_smooth_union"), d, k.d, lit_.real(n.params[0])));
+          w_.line(fmt::format("{} = {}({}, {}, {});", d, call("op_smooth_union"), d, k.d, param(n, 0, lit_)));
           break;
         case Kind::Intersection:
           if (track) w_.line(fmt::format("{} = SEL({}, {}, {} > {});", m, m, k.mat, k.d, d));
@@ -362,13 +377,13 @@ class SceneEmitter {
           break;
         case Kind::SmoothIntersection:
           if (track) w_.line(fmt::format("{} = SEL({}, {}, {} > {});", m, m, k.mat, k.d, d));
-          w_.line(fmt::format("{} = {}({}, {}, {});", d, call("op_smooth_intersection"), d, k.d, lit_.real(n.params[0])));
+          w_.line(fmt::format("{} = {}({}, {}, {});", d, call("op_smooth_intersection"), d, k.d, param(n, 0, lit_)));
           break;
         case Kind::Difference:  // the cut face keeps the first child's material
           w_.line(fmt::format("{} = fmax({}, -{});", d, d, k.d));
           break;
         case Kind::SmoothDifference:
-          w_.line(fmt::format("{} = {}({}, {}, {});", d, call("op_smooth_difference"), d, k.d, lit_.real(n.params[0])));
+          w_.line(fmt::format("{} = {}({}, {}, {});", d, call("op_smooth_difference"), d, k.d, param(n, 0, lit_)));
           break;
         // Blends (issue 9): intersection and difference are the union's dual.
         case Kind::BlendUnion:
@@ -494,6 +509,7 @@ class SceneEmitter {
   double cur_mat_ = 0;  // scene_material: the material of the nearest material node above
   std::string leaf_p_;
   std::set<NodeId> iteration_;
+  bool iterations_;
   std::set<std::string>& used_;
   std::string file_;
   CodeWriter w_;
@@ -544,6 +560,11 @@ bool needs_material_blend(const ir::Module& m) { return BlendFinder(m).found(m.r
 std::string emit_scene_material(const ir::Module& m, const Literals& lit, std::set<std::string>& used) {
   std::string out = "// ---- scene material: evaluated once per hit; smooth blends mix their children's materials ----\n";
   return out + SceneEmitter(m, lit, false, used, false, true).function(m.root);
+}
+
+std::string emit_scene_iterations(const ir::Module& m, const Literals& lit, std::set<std::string>& used) {
+  return "// ---- iteration count of the nearest fractal (0 elsewhere): the iterations AOV, once per pixel ----\n" +
+         SceneEmitter(m, lit, false, used, false, false, true).function(m.root);
 }
 
 std::string emit_scene_functions(const ir::Module& m, const Literals& lit, std::set<std::string>& used) {

@@ -19,4 +19,8 @@ bool needs_material_blend(const ir::Module& m);
 // and the nearest material's id. Calls material_of, so it goes after the
 // shading functions.
 std::string emit_scene_material(const ir::Module& m, const Literals& lit, std::set<std::string>& used);
+
+// `real scene_iterations(vec3 p)`: the iteration count of the nearest
+// fractal at p, 0 where a non-fractal surface is nearest (the AOV).
+std::string emit_scene_iterations(const ir::Module& m, const Literals& lit, std::set<std::string>& used);
 }  // namespace sdfc::codegen::detail

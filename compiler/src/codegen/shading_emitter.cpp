@@ -49,10 +49,10 @@ std::string shadow_call(const ir::Light& l, const std::string& to_light, std::st
   std::string tail = fmt::format("footprint, 0.5f * footprint, {}, hit & (v3_dot(n, {}) > 0.0f)", l.shadow_steps, to_light);
   if (l.shadows == ir::Light::Shadows::Hard) {
     used.insert("shadow_hard");
-    return fmt::format("shadow_hard({}, {})", common, tail);
+    return fmt::format("shadow_hard(TIME_ARG {}, {})", common, tail);
   }
   used.insert("shadow_soft");
-  return fmt::format("shadow_soft({}, {}, {})", common, lit.real(l.softness), tail);
+  return fmt::format("shadow_soft(TIME_ARG {}, {}, {})", common, lit.real(l.softness), tail);
 }
 
 }  // namespace
@@ -102,7 +102,7 @@ std::string emit_shading(const ir::RenderPlan& plan, const Literals& lit, const 
   for (const auto& l : plan.lights) any_shadows |= l.shadows != ir::Light::Shadows::None;
   w.line("// ---- lighting: v points from the surface to the eye ----");
   std::string mat_params = blended ? "vec3 albedo, real specular, real shininess" : "real mat" + trap_param;
-  w.line(fmt::format("vec3 shade_surface(vec3 p, vec3 n, vec3 v, {}{}{})", mat_params, ao ? ", real occlusion" : "",
+  w.line(fmt::format("vec3 shade_surface(TIME_PARAM vec3 p, vec3 n, vec3 v, {}{}{})", mat_params, ao ? ", real occlusion" : "",
                      any_shadows ? ", real footprint, mask hit" : ""));
   w.open("{");
   if (!blended) {
@@ -125,11 +125,14 @@ std::string emit_shading(const ir::RenderPlan& plan, const Literals& lit, const 
   for (size_t i = 0; i < plan.lights.size(); ++i) {
     const ir::Light& l = plan.lights[i];
     ir::Vec3d radiance{l.color[0] * l.intensity, l.color[1] * l.intensity, l.color[2] * l.intensity};
+    // An animated intensity scales the colour per frame.
+    std::string rad = l.intensity_anim ? fmt::format("v3_scale({}, {})", lit.vec3(l.color), animated(l.intensity_anim, l.intensity, lit))
+                                       : lit.vec3(radiance);
     if (l.kind == ir::LightKind::Directional) {
       any_direct = true;
       w.line(fmt::format("// light {}: directional ({})", i, where(l.loc)));
       std::string to_light = lit.vec3({-l.direction[0], -l.direction[1], -l.direction[2]});
-      std::string term = fmt::format("shade_blinn_phong(n, {}, v, albedo, specular, shininess, {})", to_light, lit.vec3(radiance));
+      std::string term = fmt::format("shade_blinn_phong(n, {}, v, albedo, specular, shininess, {})", to_light, rad);
       std::string sh = shadow_call(l, to_light, lit.real(plan.march.max_distance), lit, bounds, used);
       if (!sh.empty()) term = fmt::format("v3_scale({}, {})", term, sh);
       w.line(fmt::format("c = v3_add(c, {});", term));
@@ -137,12 +140,16 @@ std::string emit_shading(const ir::RenderPlan& plan, const Literals& lit, const 
       any_direct = true;
       w.line(fmt::format("// light {}: point, falls off with the squared distance ({})", i, where(l.loc)));
       w.open("{");
-      w.line(fmt::format("vec3 l = v3_sub({}, p);", lit.vec3(l.position)));
+      std::string pos = lit.vec3(l.position);
+      if (l.position_anim[0] || l.position_anim[1] || l.position_anim[2])
+        pos = fmt::format("v3({}, {}, {})", animated(l.position_anim[0], l.position[0], lit),
+                          animated(l.position_anim[1], l.position[1], lit), animated(l.position_anim[2], l.position[2], lit));
+      w.line(fmt::format("vec3 l = v3_sub({}, p);", pos));
       w.line("real dist2 = fmax(v3_dot(l, l), K(1e-8f));");
       w.line("l = v3_scale(l, rsqrt(dist2));");
       std::string sh = shadow_call(l, "l", "sqrt(dist2)", lit, bounds, used);
       w.line(fmt::format("c = v3_add(c, v3_scale(shade_blinn_phong(n, l, v, albedo, specular, shininess, {}), {}1.0f / dist2));",
-                         lit.vec3(radiance), sh.empty() ? "" : sh + " * "));
+                         rad, sh.empty() ? "" : sh + " * "));
       w.close("}");
     }
   }

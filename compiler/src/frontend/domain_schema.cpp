@@ -65,7 +65,7 @@ NodeId apply_domain_modifiers(ValueReader& r, ir::Builder& b, const SourceValue&
           // A quoted string's location is its opening quote; columns count from the text.
           SourceLoc at = e->loc;
           if (e->quoted) at.column += 1;
-          expr::ExprPtr ex = expr::fold(expr::parse(e->scalar, at, {"x", "y", "z"}));
+          expr::ExprPtr ex = expr::fold(expr::parse(e->scalar, at, {"x", "y", "z", "time"}));
           b.graph().expressions.push_back(ex);
           n = wrap(Kind::Displace, {double(b.graph().expressions.size() - 1)}, *v);
         } catch (const SceneError& err) {

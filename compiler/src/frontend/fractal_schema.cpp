@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "animated_node.hpp"
 #include "sdfc/ir/fractal_math.hpp"
 
 namespace sdfc::frontend {
@@ -26,12 +27,15 @@ namespace {
 double norm(const Vec3d& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
 
 // A Mandelbox scale must expand (|scale| > 1) or the set fills space.
-double mandelbox_scale(MapReader& m, const std::string& what, ValueReader& r) {
-  double scale = m.number("scale", -1.5, Range::closed(-8, 8));
-  if (std::fabs(scale) <= 1.0 && m.get("scale"))
-    r.sink().error(m.get("scale")->loc, fmt::format("{}.scale: expected |scale| > 1, got {}", what, scale),
+Param mandelbox_scale(MapReader& m, const std::string& what, ValueReader& r) {
+  Param scale = m.param("scale", -1.5, Range::closed(-8, 8));
+  bool expands = scale.lo > 1.0 || scale.hi < -1.0;  // at every time
+  if (!expands && m.get("scale"))
+    r.sink().error(m.get("scale")->loc,
+                   scale.animated() ? fmt::format("{}.scale: expected |scale| > 1 at every time, but it ranges over [{:g}, {:g}]", what, scale.lo, scale.hi)
+                                    : fmt::format("{}.scale: expected |scale| > 1, got {}", what, scale.value),
                    "the Mandelbox needs an expanding scale such as 2 or -1.5");
-  return std::fabs(scale) <= 1.0 ? -1.5 : scale;
+  return expands ? scale : Param(-1.5);
 }
 
 // min_radius < fixed_radius, both positive.
@@ -71,43 +75,49 @@ double de_method(ValueReader& r, const MapReader& m, std::string_view what,
 
 NodeId mandelbulb(ValueReader& r, ir::Builder& b, const SourceValue& body, const SourceLoc& at) {
   MapReader m(r, body, "mandelbulb", {"power", "iterations", "bailout", "julia", "de"});
-  double power = m.number("power", 8.0, Range::closed(1, 64));
+  Param power = m.param("power", 8.0, Range::closed(1, 64));
   int iterations = m.integer("iterations", 10, 1, 1000);
-  double bailout = m.number("bailout", 2.0, {0, 1e3, true});
+  Param bailout = m.param("bailout", 2.0, {0, 1e3, true});
   if (!m.get("julia")) {
     double method = de_method(r, m, "mandelbulb", {ir::DeMethod::Analytic, ir::DeMethod::Gradient,
                                                    ir::DeMethod::Potential, ir::DeMethod::SinhPotential});
-    return b.make(Kind::Mandelbulb, {power, double(iterations), bailout, method}, {}, at);
+    return make_node(b, Kind::Mandelbulb, {power, double(iterations), bailout, method}, {}, at);
   }
   de_method(r, m, "mandelbulb with julia", {ir::DeMethod::Analytic});
-  if (power < 2) {
-    r.sink().error(m.get("power") ? m.get("power")->loc : at, fmt::format("mandelbulb.power: a Juliabulb needs power >= 2, got {}", power), "");
+  if (power.lo < 2) {
+    r.sink().error(m.get("power") ? m.get("power")->loc : at, fmt::format("mandelbulb.power: a Juliabulb needs power >= 2, got {}", power.lo), "");
+    return ir::kNoNode;
+  }
+  // The Juliabulb's far field needs the root of R^power - R - |c|, found at
+  // compile time, so its power stays static.
+  if (power.animated()) {
+    r.sink().error(m.get("power")->loc, "mandelbulb.power cannot be animated in a Juliabulb (with julia)", "animate the power of a plain mandelbulb");
     return ir::kNoNode;
   }
   Vec3d c = m.vec3("julia", {0, 0, 0}, Range::closed(-4, 4));
-  return b.make(Kind::Juliabulb, {power, double(iterations), bailout, c[0], c[1], c[2]}, {}, at);
+  return make_node(b, Kind::Juliabulb, {power, double(iterations), bailout, c[0], c[1], c[2]}, {}, at);
 }
 
 NodeId mandelbox(ValueReader& r, ir::Builder& b, const SourceValue& body, const SourceLoc& at) {
   std::string what = "mandelbox";
   MapReader m(r, body, what, {"scale", "min_radius", "fixed_radius", "folding_limit", "iterations", "julia", "scale_xyz", "de"});
   double method = de_method(r, m, what, {ir::DeMethod::Analytic, ir::DeMethod::Jacobian});
-  double scale = mandelbox_scale(m, what, r);
+  Param scale = mandelbox_scale(m, what, r);
   auto [min_r, fixed_r] = mandelbox_radii(m, what, r);
   double fl = m.number("folding_limit", 1.0, Range::positive(100));
   int iterations = m.integer("iterations", 12, 1, 200);
   bool julia = m.get("julia") != nullptr;
   Vec3d c = m.vec3("julia", {0, 0, 0}, Range::closed(-10, 10));
   Vec3d s = m.vec3("scale_xyz", {1, 1, 1}, Range::closed(0.25, 4));
-  double smallest = std::fabs(scale) * std::min({s[0], s[1], s[2]});
+  double smallest = std::min(std::fabs(scale.lo), std::fabs(scale.hi)) * std::min({s[0], s[1], s[2]});
   if (smallest <= 1.0 && m.get("scale_xyz")) {
     r.sink().error(m.get("scale_xyz")->loc,
                    fmt::format("mandelbox.scale_xyz: |scale| x the smallest factor is {:.3g}, but must be > 1", smallest),
                    "every axis must still expand; raise the smallest factor");
     s = {1, 1, 1};
   }
-  return b.make(Kind::Mandelbox, {scale, min_r, fixed_r, fl, double(iterations), julia ? 1.0 : 0.0, c[0], c[1], c[2],
-                                  s[0], s[1], s[2], method}, {}, at);
+  return make_node(b, Kind::Mandelbox, {scale, min_r, fixed_r, fl, double(iterations), julia ? 1.0 : 0.0, c[0], c[1], c[2],
+                                       s[0], s[1], s[2], method}, {}, at);
 }
 
 NodeId julia(ValueReader& r, ir::Builder& b, const SourceValue& body, const SourceLoc& at) {
@@ -126,16 +136,16 @@ NodeId menger(ValueReader& r, ir::Builder& b, const SourceValue& body, const Sou
   MapReader m(r, body, "menger", {"iterations", "scale", "de"});
   de_method(r, m, "menger", {ir::DeMethod::Analytic});
   int iterations = m.integer("iterations", 4, 1, 12);
-  double scale = m.number("scale", 3.0, Range::closed(2, 4));
-  return b.make(Kind::Menger, {double(iterations), scale}, {}, at);
+  Param scale = m.param("scale", 3.0, Range::closed(2, 4));
+  return make_node(b, Kind::Menger, {double(iterations), scale}, {}, at);
 }
 
 NodeId sierpinski(ValueReader& r, ir::Builder& b, const SourceValue& body, const SourceLoc& at) {
   MapReader m(r, body, "sierpinski", {"iterations", "scale", "de"});
   de_method(r, m, "sierpinski", {ir::DeMethod::Analytic});
   int iterations = m.integer("iterations", 8, 1, 30);
-  double scale = m.number("scale", 2.0, {1, 4, true});
-  return b.make(Kind::Sierpinski, {double(iterations), scale}, {}, at);
+  Param scale = m.param("scale", 2.0, {1, 4, true});
+  return make_node(b, Kind::Sierpinski, {double(iterations), scale}, {}, at);
 }
 
 std::array<double, 9> rotation(ValueReader& r, const MapReader& m, std::string_view key) {
@@ -181,7 +191,9 @@ bool hybrid_step(ValueReader& r, const SourceValue& v, std::vector<double>& out)
   if (k.scalar == "mandelbox") {
     std::string what = "hybrid mandelbox step";
     MapReader m(r, body, what, {"scale", "min_radius", "fixed_radius", "folding_limit"});
-    double scale = mandelbox_scale(m, what, r);
+    Param sp = mandelbox_scale(m, what, r);
+    if (sp.animated()) r.sink().error(m.get("scale")->loc, what + ".scale cannot be animated", "animate a mandelbox node's scale instead");
+    double scale = sp.value;
     auto [min_r, fixed_r] = mandelbox_radii(m, what, r);
     double fl = m.number("folding_limit", 1.0, Range::positive(100));
     out.insert(out.end(), {double(ir::HybridStep::Mandelbox), 1, scale, min_r, fixed_r, fl});

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <numbers>
 
+#include "animated_node.hpp"
 #include "catalogue_schema.hpp"
 #include "domain_schema.hpp"
 
@@ -67,6 +68,56 @@ Mat3 axis_angle(const Vec3d& a, double deg) {
           z * x * C - y * s, z * y * C + x * s, c + z * z * C};
 }
 
+// The same for an animated angle: each entry an expression of time.
+using MatE = std::array<expr::ExprPtr, 9>;
+using expr::Op;
+
+expr::ExprPtr as_expr(const Param& p) { return p.anim ? p.anim : expr::number(p.value); }
+
+bool is_zero(const expr::ExprPtr& e) { return e->op == Op::Number && e->value == 0; }
+
+// sum + k * term, leaving out zero terms (so the kernel holds no 0 * sin(...)).
+expr::ExprPtr add_term(expr::ExprPtr sum, expr::ExprPtr k, expr::ExprPtr term) {
+  if (is_zero(k) || is_zero(term)) return sum;
+  expr::ExprPtr prod = k->op == Op::Number && k->value == 1 ? term : expr::binary(Op::Mul, std::move(k), std::move(term));
+  return is_zero(sum) ? prod : expr::binary(Op::Add, std::move(sum), std::move(prod));
+}
+
+MatE axis_angle(const Vec3d& a, const Param& deg) {
+  auto num = expr::number;
+  expr::ExprPtr t = expr::binary(Op::Mul, as_expr(deg), num(std::numbers::pi / 180.0));
+  expr::ExprPtr c = expr::call("cos", {t}), s = expr::call("sin", {t});
+  expr::ExprPtr C = expr::binary(Op::Sub, num(1), c);
+  double x = a[0], y = a[1], z = a[2];
+  auto e = [&](double cc, double ss, double k) {
+    return add_term(add_term(add_term(num(0), num(cc), c), num(ss), s), num(k), C);
+  };
+  return {e(1, 0, x * x), e(0, -z, x * y), e(0, y, x * z),
+          e(0, z, y * x), e(1, 0, y * y), e(0, -x, y * z),
+          e(0, -y, z * x), e(0, x, z * y), e(1, 0, z * z)};
+}
+
+MatE mul(const MatE& a, const MatE& b) {
+  MatE r;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      expr::ExprPtr sum = expr::number(0);
+      for (int k = 0; k < 3; ++k) sum = add_term(sum, a[i * 3 + k], b[k * 3 + j]);
+      r[i * 3 + j] = sum;
+    }
+  return r;
+}
+
+// A matrix entry as a parameter: a rotation's entries lie in [-1, 1].
+Param entry(const expr::ExprPtr& e) {
+  if (expr::is_constant(e)) return expr::evaluate(e, {});
+  Param p;
+  p.anim = e;
+  p.value = expr::evaluate(e, {{"time", 0.0}});
+  p.lo = -1, p.hi = 1;
+  return p;
+}
+
 }  // namespace
 
 NodeId GeometryLowering::lower(const SourceValue& v) {
@@ -113,7 +164,7 @@ NodeId GeometryLowering::lower_kind(const SourceValue& key, const SourceValue& b
   std::string what = k;
   // Blends other than the polynomial smooth ones (domain_schema.cpp).
   auto kids_of = [&](Kind kind, const SourceValue& list, std::vector<double> params) {
-    return lower_children(kind, key, list, std::move(params));
+    return lower_children(kind, key, list, std::vector<Param>(params.begin(), params.end()));
   };
   if (auto n = lower_blend(r_, key, body, kids_of)) return *n;
   // Combinators.
@@ -124,7 +175,7 @@ NodeId GeometryLowering::lower_kind(const SourceValue& key, const SourceValue& b
   if (k == "smooth_union" || k == "smooth_intersection" || k == "smooth_difference") {
     MapReader m(r_, body, what, {"radius", "kind", "children"});
     if (!m.ok()) return ir::kNoNode;
-    double radius = m.require("radius") ? m.number("radius", 0.1, Range::positive()) : 0.1;
+    Param radius = m.require("radius") ? m.param("radius", 0.1, Range::positive()) : Param(0.1);
     const SourceValue* kids = m.require("children");
     if (!kids) return ir::kNoNode;
     Kind kind = k == "smooth_union" ? Kind::SmoothUnion : k == "smooth_intersection" ? Kind::SmoothIntersection : Kind::SmoothDifference;
@@ -133,39 +184,39 @@ NodeId GeometryLowering::lower_kind(const SourceValue& key, const SourceValue& b
   // Primitives and fractals.
   if (k == "sphere") {
     MapReader m(r_, body, what, {"radius"});
-    return b_.make(Kind::Sphere, {m.number("radius", 1.0, Range::positive())}, {}, at);
+    return make_node(b_, Kind::Sphere, {m.param("radius", 1.0, Range::positive())}, {}, at);
   }
   if (k == "box") {
     MapReader m(r_, body, what, {"size", "radius"});
-    Vec3d size = m.vec3("size", {1, 1, 1}, Range::positive());
-    double radius = m.number("radius", 0.0, Range::non_negative());
-    double smallest = std::min({size[0], size[1], size[2]});
-    if (radius > 0.5 * smallest && m.get("radius"))
-      r_.sink().error(m.get("radius")->loc, fmt::format("box.radius: {} is more than half the smallest side ({})", radius, smallest), "");
-    return b_.make(Kind::Box, {size[0] / 2, size[1] / 2, size[2] / 2, radius}, {}, at);
+    Param3 size = m.param3("size", {1, 1, 1}, Range::positive());
+    Param radius = m.param("radius", 0.0, Range::non_negative());
+    double smallest = std::min({size[0].lo, size[1].lo, size[2].lo});
+    if (radius.hi > 0.5 * smallest && m.get("radius"))
+      r_.sink().error(m.get("radius")->loc, fmt::format("box.radius: {} is more than half the smallest side ({})", radius.hi, smallest), "");
+    return make_node(b_, Kind::Box, {size[0].scaled(0.5), size[1].scaled(0.5), size[2].scaled(0.5), radius}, {}, at);
   }
   if (k == "torus") {
     MapReader m(r_, body, what, {"major_radius", "minor_radius"});
-    double major = m.number("major_radius", 1.0, Range::positive());
-    double minor = m.number("minor_radius", 0.25, Range::positive());
-    return b_.make(Kind::Torus, {major, minor}, {}, at);
+    Param major = m.param("major_radius", 1.0, Range::positive());
+    Param minor = m.param("minor_radius", 0.25, Range::positive());
+    return make_node(b_, Kind::Torus, {major, minor}, {}, at);
   }
   if (k == "plane") {
     MapReader m(r_, body, what, {"normal", "offset"});
     Vec3d n = m.direction("normal", {0, 0, 1});
-    return b_.make(Kind::Plane, {n[0], n[1], n[2], m.number("offset", 0.0)}, {}, at);
+    return make_node(b_, Kind::Plane, {n[0], n[1], n[2], m.param("offset", 0.0)}, {}, at);
   }
   if (k == "cylinder") {
     MapReader m(r_, body, what, {"radius", "height"});
-    double radius = m.number("radius", 0.5, Range::positive());
-    double height = m.number("height", 1.0, Range::positive());
-    return b_.make(Kind::Cylinder, {radius, height / 2}, {}, at);
+    Param radius = m.param("radius", 0.5, Range::positive());
+    Param height = m.param("height", 1.0, Range::positive());
+    return make_node(b_, Kind::Cylinder, {radius, height.scaled(0.5)}, {}, at);
   }
   if (k == "capsule") {
     MapReader m(r_, body, what, {"a", "b", "radius"});
-    Vec3d a = m.vec3("a", {0, 0, -0.5}), bb = m.vec3("b", {0, 0, 0.5});
-    double radius = m.number("radius", 0.25, Range::positive());
-    return b_.make(Kind::Capsule, {a[0], a[1], a[2], bb[0], bb[1], bb[2], radius}, {}, at);
+    Param3 a = m.param3("a", {0, 0, -0.5}), bb = m.param3("b", {0, 0, 0.5});
+    Param radius = m.param("radius", 0.25, Range::positive());
+    return make_node(b_, Kind::Capsule, {a[0], a[1], a[2], bb[0], bb[1], bb[2], radius}, {}, at);
   }
   for (auto f : fractal_kinds())
     if (k == f) return lower_fractal(r_, b_, key, body);
@@ -175,7 +226,7 @@ NodeId GeometryLowering::lower_kind(const SourceValue& key, const SourceValue& b
 }
 
 NodeId GeometryLowering::lower_children(Kind kind, const SourceValue& key, const SourceValue& list,
-                                        std::vector<double> params) {
+                                        std::vector<Param> params) {
   std::string what(ir::info(kind).name);
   if (!list.is_seq()) {
     r_.sink().error(list.loc, fmt::format("{}: expected a list of geometry nodes, got {}", what, list.kind_name()), "");
@@ -193,7 +244,7 @@ NodeId GeometryLowering::lower_children(Kind kind, const SourceValue& key, const
     kids.push_back(c);
   }
   if (bad) return ir::kNoNode;
-  return b_.make(kind, std::move(params), std::move(kids), key.loc);
+  return make_node(b_, kind, params, std::move(kids), key.loc);
 }
 
 NodeId GeometryLowering::apply_modifiers(const SourceValue& node, NodeId n) {
@@ -207,26 +258,51 @@ NodeId GeometryLowering::apply_modifiers(const SourceValue& node, NodeId n) {
     Vec3d f = r_.vec3(*s, "scale", {0, 1e4, true});
     n = b_.make(Kind::ScaleXYZ, {f[0], f[1], f[2]}, {n}, s->loc);
   } else if (s) {
-    double f = r_.number(*s, "scale", {0, 1e4, true});
-    n = b_.make(Kind::Scale, {f}, {n}, s->loc);
+    Param f = r_.param(*s, "scale", {0, 1e4, true});
+    n = make_node(b_, Kind::Scale, {f}, {n}, s->loc);
   }
   if (const SourceValue* rot = node.find("rotate")) {
-    Mat3 m{1, 0, 0, 0, 1, 0, 0, 0, 1};
+    // Animated angles may grow without limit ("20*time"); static ones are checked.
+    Range angles = Range::closed(-36000, 36000);
+    std::array<Vec3d, 3> axes;
+    Param3 deg{0.0, 0.0, 0.0};
+    std::array<const SourceValue*, 3> where{rot, rot, rot};
+    int count = 3;
     if (rot->is_seq()) {
-      Vec3d e = r_.vec3(*rot, "rotate", Range::closed(-36000, 36000));
       // Degrees about X, then Y, then Z: R = Rz * Ry * Rx.
-      m = mul(axis_angle({0, 0, 1}, e[2]), mul(axis_angle({0, 1, 0}, e[1]), axis_angle({1, 0, 0}, e[0])));
+      axes = {Vec3d{0, 0, 1}, Vec3d{0, 1, 0}, Vec3d{1, 0, 0}};
+      Param3 e = r_.param3(*rot, "rotate", {-1e300, 1e300});
+      deg = {e[2], e[1], e[0]};
+      if (rot->items.size() == 3) where = {&rot->items[2], &rot->items[1], &rot->items[0]};
     } else {
       MapReader mr(r_, *rot, "rotate", {"axis", "degrees"});
-      Vec3d axis = mr.require("axis") ? mr.direction("axis", {0, 0, 1}) : Vec3d{0, 0, 1};
-      double deg = mr.require("degrees") ? mr.number("degrees", 0, Range::closed(-36000, 36000)) : 0;
-      m = axis_angle(axis, deg);
+      axes[0] = mr.require("axis") ? mr.direction("axis", {0, 0, 1}) : Vec3d{0, 0, 1};
+      deg[0] = mr.require("degrees") ? mr.param("degrees", 0, {-1e300, 1e300}) : Param(0.0);
+      if (mr.get("degrees")) where[0] = mr.get("degrees");
+      count = 1;
     }
-    n = b_.make(Kind::Rotate, std::vector<double>(m.begin(), m.end()), {n}, rot->loc);
+    bool animated = false;
+    for (int i = 0; i < count; ++i) {
+      animated = animated || deg[i].animated();
+      if (!deg[i].animated() && (deg[i].value < angles.lo || deg[i].value > angles.hi))
+        r_.sink().error(where[i]->loc, fmt::format("{}: expected a number from -36000 to 36000, got {}",
+                                                   rot->is_seq() ? "rotate" : "rotate.degrees", where[i]->scalar), "");
+    }
+    if (!animated) {
+      Mat3 m = axis_angle(axes[0], deg[0].value);
+      if (count == 3) m = mul(m, mul(axis_angle(axes[1], deg[1].value), axis_angle(axes[2], deg[2].value)));
+      n = b_.make(Kind::Rotate, std::vector<double>(m.begin(), m.end()), {n}, rot->loc);
+    } else {
+      MatE m = axis_angle(axes[0], deg[0]);
+      for (int i = 1; i < count; ++i) m = mul(m, axis_angle(axes[i], deg[i]));
+      std::vector<Param> entries;
+      for (const auto& e : m) entries.push_back(entry(e));
+      n = make_node(b_, Kind::Rotate, entries, {n}, rot->loc);
+    }
   }
   if (const SourceValue* t = node.find("translate")) {
-    Vec3d v = r_.vec3(*t, "translate");
-    n = b_.make(Kind::Translate, {v[0], v[1], v[2]}, {n}, t->loc);
+    Param3 v = r_.param3(*t, "translate");
+    n = make_node(b_, Kind::Translate, {v[0], v[1], v[2]}, {n}, t->loc);
   }
   if (const SourceValue* f = node.find("step_factor")) {
     // The fudge factor, local to this node: its distance times f.

@@ -155,14 +155,19 @@ void read_lights(ValueReader& r, const SourceValue& v, ir::RenderPlan& plan) {
       l.kind = ir::LightKind::Directional;
       l.direction = m.direction("direction", {0.577, 0.577, -0.577});
       l.color = m.vec3("color", l.color, unit);
-      l.intensity = m.number("intensity", 1.0, Range::non_negative(1e4));
+      frontend::Param intensity = m.param("intensity", 1.0, Range::non_negative(1e4));
+      l.intensity = intensity.value, l.intensity_anim = intensity.anim;
       read_shadows(m, l);
     } else if (key.scalar == "point") {
       MapReader m(r, body, what, {"position", "color", "intensity", "shadows", "softness", "shadow_steps"});
       l.kind = ir::LightKind::Point;
-      if (m.require("position")) l.position = m.vec3("position", l.position);
+      if (m.require("position")) {
+        frontend::Param3 p = m.param3("position", l.position);
+        for (int i = 0; i < 3; ++i) l.position[i] = p[i].value, l.position_anim[i] = p[i].anim;
+      }
       l.color = m.vec3("color", l.color, unit);
-      l.intensity = m.number("intensity", 1.0, Range::non_negative(1e6));
+      frontend::Param intensity = m.param("intensity", 1.0, Range::non_negative(1e6));
+      l.intensity = intensity.value, l.intensity_anim = intensity.anim;
       read_shadows(m, l);
     } else if (key.scalar == "ambient") {
       MapReader m(r, body, what, {"color", "intensity"});
@@ -242,8 +247,15 @@ void add_default_ambient(ir::RenderPlan& plan) {
 void check_dual_normals(ValueReader& r, const MapReader& top, const ir::Graph& g, ir::NodeId root) {
   for (ir::NodeId id : g.postorder(root)) {
     const ir::Node& n = g.node(id);
-    if (ir::supports_dual_normals(n.kind)) continue;
     const SourceValue* at = top.get("render")->find("normals");
+    if (n.animated()) {
+      r.sink().error(at->loc,
+                     fmt::format("render.normals: dual does not differentiate animated values ('{}', line {})",
+                                 ir::info(n.kind).name, n.loc.line),
+                     "use 'normals: tetrahedral' or 'normals: central' for an animated scene");
+      return;
+    }
+    if (ir::supports_dual_normals(n.kind)) continue;
     r.sink().error(at->loc,
                    fmt::format("render.normals: dual needs dual-number derivatives, which '{}' (line {}) does not have; "
                                "they exist for {}",

@@ -29,7 +29,8 @@ void read_fog(ValueReader& r, const SourceValue& v, ir::Fog& f) {
   MapReader m(r, v, "effects.fog", {"color", "density", "height_falloff", "base_height"});
   f.enabled = true;
   f.color = m.vec3("color", f.color, Range::closed(0, 1000));
-  f.density = m.number("density", f.density, Range::non_negative(1e3));
+  Param density = m.param("density", f.density, Range::non_negative(1e3));
+  f.density = density.value, f.density_anim = density.anim;
   f.height_falloff = m.number("height_falloff", f.height_falloff, Range::non_negative(1e3));
   f.base_height = m.number("base_height", f.base_height);
 }
@@ -39,14 +40,22 @@ void read_reflections(ValueReader& r, const SourceValue& v, ir::Reflections& ref
   refl.depth = m.integer("depth", 1, 0, 8);
 }
 
+// `fog: false` (or null) leaves an effect off, so `--set effects.fog=false`
+// can switch off one effect of a scene.
+const SourceValue* enabled(const MapReader& m, std::string_view key) {
+  const SourceValue* x = m.get(key);
+  if (x && (x->is_null() || (x->is_scalar() && !x->quoted && x->scalar == "false"))) return nullptr;
+  return x;
+}
+
 }  // namespace
 
 void read_effects(ValueReader& r, const SourceValue& v, ir::Effects& fx) {
   MapReader m(r, v, "effects", {"ambient_occlusion", "glow", "fog", "reflections"});
-  if (auto* x = m.get("ambient_occlusion")) read_ambient_occlusion(r, *x, fx.ambient_occlusion);
-  if (auto* x = m.get("glow")) read_glow(r, *x, fx.glow);
-  if (auto* x = m.get("fog")) read_fog(r, *x, fx.fog);
-  if (auto* x = m.get("reflections")) read_reflections(r, *x, fx.reflections);
+  if (auto* x = enabled(m, "ambient_occlusion")) read_ambient_occlusion(r, *x, fx.ambient_occlusion);
+  if (auto* x = enabled(m, "glow")) read_glow(r, *x, fx.glow);
+  if (auto* x = enabled(m, "fog")) read_fog(r, *x, fx.fog);
+  if (auto* x = enabled(m, "reflections")) read_reflections(r, *x, fx.reflections);
 }
 
 }  // namespace sdfc::frontend

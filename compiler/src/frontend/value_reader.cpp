@@ -16,9 +16,87 @@ std::string range_text(const Range& r) {
   return fmt::format("a number from {} to {}", r.lo, r.hi);
 }
 
+bool in_range(double x, const Range& r) { return !(r.lo_open ? x <= r.lo : x < r.lo) && x <= r.hi; }
+
+double fallback(const Range& r) { return r.lo_open ? r.lo + 1 : std::max(r.lo, std::min(r.hi, 1.0)); }
+
 }  // namespace
 
+Param Param::scaled(double k) const {
+  Param p;
+  p.value = value * k;
+  p.lo = std::min(lo * k, hi * k);
+  p.hi = std::max(lo * k, hi * k);
+  if (anim) p.anim = expr::binary(expr::Op::Mul, expr::number(k), anim);
+  return p;
+}
+
+expr::ExprPtr ValueReader::expression(const SourceValue& v, bool* plain) {
+  *plain = !v.is_scalar() || !v.quoted || !expr::looks_like_expression(v.scalar) || v.scalar.empty();
+  if (*plain) return nullptr;
+  try {
+    SourceLoc at = v.loc;
+    at.column += 1;  // a quoted string's location is its opening quote
+    return expr::fold(expr::parse(v.scalar, at, {"time"}));
+  } catch (const SceneError& err) {
+    for (const auto& d : err.diagnostics()) sink_.error(d.loc, d.message, d.hint);
+    return nullptr;
+  }
+}
+
+Param ValueReader::param(const SourceValue& v, std::string_view what, Range r) {
+  bool plain = true;
+  expr::ExprPtr e = expression(v, &plain);
+  if (plain) return number(v, what, r);
+  if (!e) return fallback(r);
+  if (!expr::uses(e, "time")) {
+    double x = expr::evaluate(e, {});
+    if (!std::isfinite(x) || std::fabs(x) > kMaxMagnitude || !in_range(x, r)) {
+      sink_.error(v.loc, fmt::format("{}: \"{}\" is {}; expected {}", what, v.scalar, x, range_text(r)), "");
+      return fallback(r);
+    }
+    return x;
+  }
+  Param p;
+  p.anim = e;
+  expr::Interval span = expr::evaluate_interval(e, {{"time", {0, expr::kMaxTime}}});
+  p.value = expr::evaluate(e, {{"time", 0.0}});
+  p.lo = span.lo, p.hi = span.hi;
+  if (!std::isfinite(p.lo) || !std::isfinite(p.hi) || !std::isfinite(p.value)) {
+    sink_.error(v.loc, fmt::format("{}: \"{}\" is not finite for every time from 0 on", what, v.scalar),
+                "keep an animated value bounded, e.g. \"1 + 0.5*sin(time)\"");
+    return fallback(r);
+  }
+  if (!in_range(p.lo, r) || !in_range(p.hi, r)) {
+    sink_.error(v.loc, fmt::format("{}: \"{}\" ranges over [{:g}, {:g}] as time goes on; expected {} at every time",
+                                   what, v.scalar, p.lo, p.hi, range_text(r)),
+                "the range is estimated by interval arithmetic over time 0 ... 1e6 s");
+    return fallback(r);
+  }
+  return p;
+}
+
+Param3 ValueReader::param3(const SourceValue& v, std::string_view what, Range r) {
+  Param3 out{fallback(r), fallback(r), fallback(r)};
+  if (!v.is_seq() || v.items.size() != 3) {
+    sink_.error(v.loc, fmt::format("{}: expected a list of 3 numbers [x, y, z], got {}", what, v.kind_name()), "");
+    return out;
+  }
+  for (size_t i = 0; i < 3; ++i) out[i] = param(v.items[i], what, r);
+  return out;
+}
+
 double ValueReader::number(const SourceValue& v, std::string_view what, Range r) {
+  bool plain = true;
+  if (expr::ExprPtr e = expression(v, &plain); !plain) {
+    if (!e) return fallback(r);
+    if (expr::uses(e, "time")) {
+      sink_.error(v.loc, fmt::format("{} cannot be animated", what),
+                  "only the values listed under 'Animation' in docs/scene-format.md may use time");
+      return fallback(r);
+    }
+    return param(v, what, r).value;
+  }
   if (!v.is_scalar() || v.quoted) {
     std::string hint;
     if (v.quoted) {
@@ -27,7 +105,7 @@ double ValueReader::number(const SourceValue& v, std::string_view what, Range r)
       std::strtod(v.scalar.c_str(), &end);
       const bool number = !v.scalar.empty() && end == v.scalar.c_str() + v.scalar.size();
       hint = number ? "remove the quotes"
-                    : "this value takes a plain number; expressions (of x, y, z) are only read in displace.expr";
+                    : "this value takes a plain number; only the values listed under 'Animation' in docs/scene-format.md may be expressions";
     }
     sink_.error(v.loc, fmt::format("{}: expected a number, got {}", what, v.kind_name()), hint);
     return r.lo_open ? r.lo + 1 : std::max(r.lo, std::min(r.hi, 1.0));
@@ -60,6 +138,19 @@ double ValueReader::number(const SourceValue& v, std::string_view what, Range r)
 }
 
 int ValueReader::integer(const SourceValue& v, std::string_view what, int lo, int hi) {
+  bool plain = true;
+  if (expr::ExprPtr e = expression(v, &plain); !plain) {
+    if (e && expr::uses(e, "time"))
+      sink_.error(v.loc, fmt::format("{} cannot be animated", what),
+                  "a whole number shapes the kernel's code (a loop count, a choice); it is fixed when the scene compiles");
+    else if (e) {
+      // A static expression folds to its value, which must be a whole number in range.
+      double x = expr::evaluate(e, {});
+      if (x == std::floor(x) && x >= lo && x <= hi) return static_cast<int>(x);
+      sink_.error(v.loc, fmt::format("{}: expected a whole number from {} to {}, but \"{}\" is {}", what, lo, hi, v.scalar, x), "");
+    }
+    return lo;
+  }
   if (!v.is_scalar() || v.quoted || v.scalar.find_first_not_of("+-0123456789") != std::string::npos ||
       v.scalar.empty()) {
     sink_.error(v.loc, fmt::format("{}: expected a whole number, got {}", what, v.kind_name()), "");
@@ -156,6 +247,17 @@ const SourceValue* MapReader::require(std::string_view key) {
 double MapReader::number(std::string_view key, double fallback, Range r) {
   const SourceValue* v = get(key);
   return v ? r_.number(*v, path(key), r) : fallback;
+}
+
+Param MapReader::param(std::string_view key, double fallback, Range r) {
+  const SourceValue* v = get(key);
+  return v ? r_.param(*v, path(key), r) : Param(fallback);
+}
+
+Param3 MapReader::param3(std::string_view key, Vec3d fallback, Range r) {
+  const SourceValue* v = get(key);
+  if (v) return r_.param3(*v, path(key), r);
+  return {fallback[0], fallback[1], fallback[2]};
 }
 
 int MapReader::integer(std::string_view key, int fallback, int lo, int hi) {

@@ -85,7 +85,8 @@ std::vector<int> Graph::use_counts(NodeId root) const {
   return uses;
 }
 
-NodeId Builder::make(Kind k, std::vector<double> params, std::vector<NodeId> children, SourceLoc loc) {
+NodeId Builder::make(Kind k, std::vector<double> params, std::vector<NodeId> children, SourceLoc loc,
+                     Animation anim) {
   const KindInfo& ki = info(k);
   if (ki.params.size() != params.size())
     throw std::logic_error("IR: wrong parameter count for " + std::string(ki.name));
@@ -102,16 +103,34 @@ NodeId Builder::make(Kind k, std::vector<double> params, std::vector<NodeId> chi
     if (v == 0.0) v = 0.0;
     put(&v, sizeof v);
   }
+  uint32_t nc = static_cast<uint32_t>(children.size());  // so the animation text below cannot pass for children
+  put(&nc, sizeof nc);
   for (NodeId c : children) put(&c, sizeof c);
+  // Animated parameters: their canonical text (a static node has none).
+  bool any = false;
+  for (const auto& e : anim) any = any || e;
+  if (!any) anim.clear();
+  if (any && anim.size() != params.size()) throw std::logic_error("IR: wrong animation count for " + std::string(ki.name));
+  for (size_t i = 0; i < anim.size(); ++i)
+    if (anim[i]) key += "\x01" + std::to_string(i) + ":" + expr::to_string(anim[i]);
   auto it = index_.find(key);
   if (it != index_.end()) return it->second;
-  NodeId id = g_.add(Node{k, std::move(params), std::move(children), std::move(loc), {}});
+  NodeId id = g_.add(Node{k, std::move(params), std::move(children), std::move(loc), {}, std::move(anim)});
   index_.emplace(std::move(key), id);
   return id;
 }
 
 NodeId Builder::copy(const Node& n, std::vector<NodeId> children) {
-  return make(n.kind, n.params, std::move(children), n.loc);
+  return make(n.kind, n.params, std::move(children), n.loc, n.anim);
+}
+
+bool Graph::animated(NodeId root) const {
+  for (NodeId id : postorder(root)) {
+    const Node& n = nodes_[id];
+    if (n.animated()) return true;
+    if (n.kind == Kind::Displace && expr::uses(expressions.at(size_t(n.params[0])), "time")) return true;
+  }
+  return false;
 }
 
 }  // namespace sdfc::ir

@@ -41,7 +41,10 @@ std::string print(const Module& m, const PrintOptions& opt) {
     const Node& node = g.node(id);
     const KindInfo& ki = info(node.kind);
     std::string line = fmt::format("%{} = {}", n, ki.name);
-    for (size_t i = 0; i < node.params.size(); ++i) line += fmt::format(" {}={}", ki.params[i], num(node.params[i]));
+    for (size_t i = 0; i < node.params.size(); ++i) {
+      if (const auto& e = node.animation(i)) line += fmt::format(" {}=\"{}\"", ki.params[i], expr::to_string(e));
+      else line += fmt::format(" {}={}", ki.params[i], num(node.params[i]));
+    }
     for (NodeId c : node.children) line += fmt::format(" %{}", number.at(c));
     if (opt.props && node.props.known)
       line += fmt::format("    ; {} L={} cost={} bounds={}", to_string(node.props.cls), num(node.props.lipschitz),
@@ -76,7 +79,8 @@ std::string print_plan(const RenderPlan& p) {
       case LightKind::Point: out += fmt::format("light {} point position={}", i, vec(l.position)); break;
       case LightKind::Ambient: out += fmt::format("light {} ambient", i); break;
     }
-    out += fmt::format(" color={} intensity={}\n", vec(l.color), num(l.intensity));
+    out += fmt::format(" color={} intensity={}\n", vec(l.color),
+                       l.intensity_anim ? "\"" + expr::to_string(l.intensity_anim) + "\"" : num(l.intensity));
   }
   for (size_t i = 0; i < p.materials.size(); ++i) {
     const MaterialDef& md = p.materials[i];

@@ -35,6 +35,9 @@ class StructuralHash {
       std::memcpy(&bits, &p, sizeof bits);
       h = mix(h, bits);
     }
+    for (const auto& e : n.anim)
+      if (e)
+        for (char ch : expr::to_string(e)) h = mix(h, uint64_t(uint8_t(ch)));
     for (NodeId c : n.children) h = mix(h, (*this)(c));
     return memo_[id] = h;
   }
@@ -51,23 +54,26 @@ std::vector<double> rotate_vec(const std::vector<double>& m, const std::vector<d
 
 bool is_transform(Kind k) { return k == Kind::Translate || k == Kind::Rotate || k == Kind::Scale; }
 
-NodeId canon(ir::Builder& b, Kind k, std::vector<double> params, std::vector<NodeId> kids, const SourceLoc& loc) {
+NodeId canon(ir::Builder& b, Kind k, std::vector<double> params, std::vector<NodeId> kids, const SourceLoc& loc,
+             const ir::Animation& anim) {
   const ir::Graph& g = b.graph();
-  if (is_transform(k)) {
+  // Animated transforms stay where they are (their parameters cannot be
+  // composed with others at compile time).
+  if (is_transform(k) && anim.empty() && !g.node(kids[0]).animated()) {
     const ir::Node c = g.node(kids[0]);  // copy: the builder may grow the graph
     if (c.kind == Kind::Material) {
-      NodeId inner = canon(b, k, params, c.children, loc);
+      NodeId inner = canon(b, k, params, c.children, loc, anim);
       return detail::fold_node(b, Kind::Material, c.params, {inner}, c.loc);
     }
     if (c.kind == Kind::Translate && (k == Kind::Rotate || k == Kind::Scale)) {
       std::vector<double> t = c.params;
       if (k == Kind::Rotate) t = rotate_vec(params, t);
       else for (double& x : t) x *= params[0];
-      NodeId inner = canon(b, k, params, c.children, loc);
+      NodeId inner = canon(b, k, params, c.children, loc, anim);
       return detail::fold_node(b, Kind::Translate, t, {inner}, c.loc);
     }
     if (k == Kind::Scale && c.kind == Kind::Rotate) {
-      NodeId inner = canon(b, k, params, c.children, loc);
+      NodeId inner = canon(b, k, params, c.children, loc, anim);
       return detail::fold_node(b, Kind::Rotate, c.params, {inner}, c.loc);
     }
   }
@@ -94,14 +100,14 @@ NodeId canon(ir::Builder& b, Kind k, std::vector<double> params, std::vector<Nod
     for (auto& [h, c] : keyed)
       if (!plain || std::find(kids.begin(), kids.end(), c) == kids.end()) kids.push_back(c);
   }
-  return detail::fold_node(b, k, std::move(params), std::move(kids), loc);
+  return detail::fold_node(b, k, std::move(params), std::move(kids), loc, anim);
 }
 
 }  // namespace
 
 ir::Module canonicalise(ir::Module m) {
   return detail::rewrite(std::move(m), [](ir::Builder& b, const ir::Node& n, std::vector<NodeId> kids) {
-    return canon(b, n.kind, n.params, std::move(kids), n.loc);
+    return canon(b, n.kind, n.params, std::move(kids), n.loc, n.anim);
   });
 }
 

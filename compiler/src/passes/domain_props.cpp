@@ -161,7 +161,8 @@ std::optional<ir::Props> domain_props(const ir::Graph& g, const ir::Node& n,
       need_bounds(n, p.bounds, "displace");
       const expr::ExprPtr& e = g.expressions.at(size_t(q[0]));
       auto over = [](const Box3& b) {
-        return expr::IntervalEnv{{"x", {b.lo[0], b.hi[0]}}, {"y", {b.lo[1], b.hi[1]}}, {"z", {b.lo[2], b.hi[2]}}};
+        return expr::IntervalEnv{{"x", {b.lo[0], b.hi[0]}}, {"y", {b.lo[1], b.hi[1]}}, {"z", {b.lo[2], b.hi[2]}},
+                                 {"time", {0, expr::kMaxTime}}};
       };
       // The surface moves by at most max|e| over the region it can move into:
       // grow the box until the bound holds for the grown box itself.

@@ -27,7 +27,7 @@ ir::Module eliminate_dead(ir::Module m) {
 
   std::vector<ir::Light> lit;
   for (const auto& l : m.plan.lights) {
-    bool dark = l.intensity <= 0 || (l.color[0] <= 0 && l.color[1] <= 0 && l.color[2] <= 0);
+    bool dark = (l.intensity <= 0 && !l.intensity_anim) || (l.color[0] <= 0 && l.color[1] <= 0 && l.color[2] <= 0);
     if (!dark) lit.push_back(l);
   }
   m.plan.lights = std::move(lit);

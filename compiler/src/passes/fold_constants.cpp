@@ -30,14 +30,20 @@ std::vector<double> mat_mul(const std::vector<double>& a, const std::vector<doub
 }  // namespace
 
 ir::NodeId fold_node(ir::Builder& b, ir::Kind k, std::vector<double> params, std::vector<ir::NodeId> kids,
-                     const SourceLoc& loc) {
+                     const SourceLoc& loc, ir::Animation anim) {
   using ir::Kind;
   const ir::Graph& g = b.graph();
   auto child = [&](size_t i) -> const ir::Node& { return g.node(kids[i]); };
+  // Animated transforms change with time: they neither vanish nor merge.
+  bool animated = false;
+  for (const auto& e : anim) animated = animated || e;
+  bool merge = !animated && !kids.empty() && !child(0).animated();
+  if (animated && ir::info(k).category == ir::Category::Transform)
+    return b.make(k, std::move(params), std::move(kids), loc, std::move(anim));
   switch (k) {
     case Kind::Translate:
       if (params[0] == 0 && params[1] == 0 && params[2] == 0) return kids[0];
-      if (child(0).kind == Kind::Translate) {
+      if (merge && child(0).kind == Kind::Translate) {
         const ir::Node& c = child(0);
         return fold_node(b, k, {params[0] + c.params[0], params[1] + c.params[1], params[2] + c.params[2]},
                          c.children, loc);
@@ -45,14 +51,14 @@ ir::NodeId fold_node(ir::Builder& b, ir::Kind k, std::vector<double> params, std
       break;
     case Kind::Rotate:
       if (is_identity(params)) return kids[0];
-      if (child(0).kind == Kind::Rotate) {
+      if (merge && child(0).kind == Kind::Rotate) {
         const ir::Node& c = child(0);
         return fold_node(b, k, mat_mul(params, c.params), c.children, loc);
       }
       break;
     case Kind::Scale:
       if (params[0] == 1) return kids[0];
-      if (child(0).kind == Kind::Scale) {
+      if (merge && child(0).kind == Kind::Scale) {
         const ir::Node& c = child(0);
         return fold_node(b, k, {params[0] * c.params[0]}, c.children, loc);
       }
@@ -65,14 +71,14 @@ ir::NodeId fold_node(ir::Builder& b, ir::Kind k, std::vector<double> params, std
       if (ir::info(k).arity == -1 && kids.size() == 1) return kids[0];
       break;
   }
-  return b.make(k, std::move(params), std::move(kids), loc);
+  return b.make(k, std::move(params), std::move(kids), loc, std::move(anim));
 }
 
 }  // namespace detail
 
 ir::Module fold_constants(ir::Module m) {
   return detail::rewrite(std::move(m), [](ir::Builder& b, const ir::Node& n, std::vector<ir::NodeId> kids) {
-    return detail::fold_node(b, n.kind, n.params, std::move(kids), n.loc);
+    return detail::fold_node(b, n.kind, n.params, std::move(kids), n.loc, n.anim);
   });
 }
 

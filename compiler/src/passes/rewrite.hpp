@@ -16,6 +16,7 @@ ir::Module rewrite(ir::Module m, const Rule& rule);
 // The folding rules, applied to one node whose children are already folded.
 // canonicalise reuses it so its reorderings fold as they are made.
 ir::NodeId fold_node(ir::Builder& b, ir::Kind k, std::vector<double> params, std::vector<ir::NodeId> kids,
-                     const SourceLoc& loc);
+                     const SourceLoc& loc,
+                     ir::Animation anim = {});
 
 }  // namespace sdfc::passes::detail

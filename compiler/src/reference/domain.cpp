@@ -167,7 +167,8 @@ std::optional<Sample> domain_evaluate(const ir::Graph& g, const ir::Node& n, con
     }
     case Kind::Displace: {
       Sample s = child(p);
-      expr::Env env{{"x", p[0]}, {"y", p[1]}, {"z", p[2]}};
+      // time 0 unless the module was taken at another time (at_time.hpp)
+      expr::Env env{{"x", p[0]}, {"y", p[1]}, {"z", p[2]}, {"time", 0.0}};
       s.distance += expr::evaluate(g.expressions.at(size_t(q[0])), env);
       return s;
     }

@@ -67,4 +67,17 @@ std::string to_opencl(const ExprPtr& e, const std::function<std::string(std::str
 // Canonical text (stable; used in IR printing and hash-consing keys).
 std::string to_string(const ExprPtr& e);
 
+// Building expressions in code: derived values of animated parameters
+// (a box's half size from its size, a rotation matrix from its angle).
+ExprPtr number(double v);
+ExprPtr binary(Op op, ExprPtr a, ExprPtr b);  // Add, Sub, Mul, Div, Pow
+ExprPtr negate(ExprPtr a);
+ExprPtr call(std::string name, std::vector<ExprPtr> args);
+// e with `var` replaced by `value`, folded (an animated value at one time).
+ExprPtr substitute(const ExprPtr& e, std::string_view var, double value);
+
+// Animated scene values are expressions of `time`, in seconds. The compiler
+// checks them (ranges, bounds) for every time in [0, kMaxTime].
+inline constexpr double kMaxTime = 1e6;
+
 }  // namespace sdfc::expr

@@ -21,7 +21,7 @@ class GeometryLowering {
 
  private:
   ir::NodeId lower_kind(const SourceValue& key, const SourceValue& body);
-  ir::NodeId lower_children(ir::Kind k, const SourceValue& key, const SourceValue& list, std::vector<double> params);
+  ir::NodeId lower_children(ir::Kind k, const SourceValue& key, const SourceValue& list, std::vector<Param> params);
   ir::NodeId apply_modifiers(const SourceValue& node, ir::NodeId child);
 
   ValueReader& r_;

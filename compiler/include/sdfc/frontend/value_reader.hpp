@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "sdfc/expr/expr.hpp"
 #include "sdfc/source/source_value.hpp"
 
 namespace sdfc::frontend {
@@ -27,12 +28,32 @@ struct Range {
   static Range closed(double lo, double hi) { return {lo, hi, false}; }
 };
 
+// A number that may be animated: an expression of `time` written as a
+// string. `value` is its value at time 0; lo and hi bound it for every time
+// in [0, expr::kMaxTime] (interval arithmetic); a static value has lo = hi.
+struct Param {
+  double value = 0;
+  expr::ExprPtr anim;  // null when static
+  double lo = 0, hi = 0;
+  Param() = default;
+  Param(double v) : value(v), lo(v), hi(v) {}  // NOLINT: a static number converts
+  bool animated() const { return anim != nullptr; }
+  Param scaled(double k) const;  // k * this
+};
+using Param3 = std::array<Param, 3>;
+
 class ValueReader {
  public:
   explicit ValueReader(DiagnosticSink& sink) : sink_(sink) {}
   DiagnosticSink& sink() { return sink_; }
 
+  // A number; a quoted expression without `time` ("2*pi"-like, folded) is
+  // one too. An expression of `time` is refused: this value cannot be animated.
   double number(const SourceValue& v, std::string_view what, Range r = {});
+  // A number that may be an expression of `time`; every value it takes over
+  // time must lie in r.
+  Param param(const SourceValue& v, std::string_view what, Range r = {});
+  Param3 param3(const SourceValue& v, std::string_view what, Range r = {});
   int integer(const SourceValue& v, std::string_view what, int lo, int hi);
   Vec3d vec3(const SourceValue& v, std::string_view what, Range r = {});
   std::vector<double> vecn(const SourceValue& v, std::string_view what, size_t n, Range r = {});
@@ -42,6 +63,9 @@ class ValueReader {
   Vec3d direction(const SourceValue& v, std::string_view what);
 
  private:
+  // A quoted expression: parsed (null after a reported error), else nullptr
+  // with *plain set when the value is not an expression at all.
+  expr::ExprPtr expression(const SourceValue& v, bool* plain);
   DiagnosticSink& sink_;
 };
 
@@ -56,6 +80,8 @@ class MapReader {
   const SourceValue& self() const { return v_; }
 
   double number(std::string_view key, double fallback, Range r = {});
+  Param param(std::string_view key, double fallback, Range r = {});
+  Param3 param3(std::string_view key, Vec3d fallback, Range r = {});
   int integer(std::string_view key, int fallback, int lo, int hi);
   Vec3d vec3(std::string_view key, Vec3d fallback, Range r = {});
   Vec3d direction(std::string_view key, Vec3d fallback);

@@ -53,12 +53,24 @@ struct Props {
   Box3 lipschitz_region;
 };
 
+// Animated parameters: empty, or one entry per parameter, null where the
+// parameter is static. An animated parameter is an expression of `time`;
+// params[i] then holds its value at time 0 (what the CPU reference
+// evaluates unless asked for another time, see reference/at_time.hpp).
+using Animation = std::vector<expr::ExprPtr>;
+
 struct Node {
   Kind kind;
   std::vector<double> params;
   std::vector<NodeId> children;
   SourceLoc loc;  // where the first occurrence came from (not part of the key)
   Props props;
+  Animation anim;  // part of the key (by the expressions' canonical text)
+  bool animated() const { return !anim.empty(); }
+  const expr::ExprPtr& animation(size_t i) const {
+    static const expr::ExprPtr none;
+    return i < anim.size() ? anim[i] : none;
+  }
 };
 
 class Graph {
@@ -72,6 +84,8 @@ class Graph {
   // How many parents reference each node among those reachable from root.
   std::vector<int> use_counts(NodeId root) const;
   // Expressions that nodes refer to by index (displace); passes carry them over.
+  // Does any node (or displace expression) reachable from root use time?
+  bool animated(NodeId root) const;
   std::vector<expr::ExprPtr> expressions;
 
  private:
@@ -82,7 +96,8 @@ class Builder {
  public:
   explicit Builder(Graph& g) : g_(g) {}
   // Returns the id of the node with this key, creating it if needed.
-  NodeId make(Kind k, std::vector<double> params, std::vector<NodeId> children, SourceLoc loc = {});
+  NodeId make(Kind k, std::vector<double> params, std::vector<NodeId> children, SourceLoc loc = {},
+              Animation anim = {});
   // Copies a node from another graph (children already mapped to this one).
   NodeId copy(const Node& n, std::vector<NodeId> children);
   Graph& graph() { return g_; }

@@ -2,6 +2,7 @@
 // Everything about a render that is not geometry: camera, lights, materials,
 // background, marcher settings and effects. Kept apart from the SDF DAG so
 // passes over geometry never see it and vice versa.
+#include "sdfc/expr/expr.hpp"
 #include <array>
 #include <string>
 #include <vector>
@@ -90,6 +91,11 @@ struct Light {
   Vec3d position{0, 0, 0};    // point
   Vec3d color{1, 1, 1};
   double intensity = 1.0;
+  // Animated (an expression of time; null when static): the intensity of a
+  // directional or point light, the position of a point light. The values
+  // above are then those at time 0.
+  expr::ExprPtr intensity_anim;
+  std::array<expr::ExprPtr, 3> position_anim{};
   // Shadows towards this light: hard (a hit/miss march) or soft (Quilez's
   // penumbra estimate, sharper for larger softness), with their own budget.
   enum class Shadows { None, Hard, Soft } shadows = Shadows::None;
@@ -135,6 +141,7 @@ struct Fog {
   bool enabled = false;
   Vec3d color{0.5, 0.6, 0.7};
   double density = 0.05;        // extinction per unit distance at base_height
+  expr::ExprPtr density_anim;   // animated density (null when static)
   double height_falloff = 0.0;  // > 0: density falls as exp(-falloff * (height - base_height))
   double base_height = 0.0;     // height along the camera's up vector
 };
