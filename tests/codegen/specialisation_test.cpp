@@ -182,7 +182,7 @@ TEST(Specialisation, MaterialBlendOnlyForSmoothBlendsOfDifferentMaterials) {
     std::string k = kernel_for(scene);
     for (const char* c : blend_code) EXPECT_EQ(k.find(c), std::string::npos) << c << " in the kernel of\n" << scene;
     // the material id comes from the scene, or is a literal where every hit has one material
-    EXPECT_TRUE(k.find("scene_dist_mat(pos, &id)") != std::string::npos ||
+    EXPECT_TRUE(k.find("scene_dist_mat(TIME_ARG pos, &id)") != std::string::npos ||
                 k.find("the scene's one material") != std::string::npos)
         << scene;
   }
@@ -199,7 +199,7 @@ TEST(Specialisation, MaterialBlendOnlyForSmoothBlendsOfDifferentMaterials) {
     size_t dist = k.find("real scene_dist(vec3 p)"), dist_end = k.find("\n}\n", dist);
     ASSERT_NE(dist, std::string::npos);
     EXPECT_EQ(k.substr(dist, dist_end - dist).find("mat_"), std::string::npos) << "blend code in the march";
-    EXPECT_EQ(k.find("scene_dist_mat(pos, &id)"), std::string::npos) << scene;
+    EXPECT_EQ(k.find("scene_dist_mat(TIME_ARG pos, &id)"), std::string::npos) << scene;
   }
 }
 
