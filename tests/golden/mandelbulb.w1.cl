@@ -66,18 +66,48 @@ inline __attribute__((always_inline)) void cpow_int(real re, real im, int n, rea
 {
     real ar = 1.0f, ai = 0.0f;
     real br = re, bi = im;
-    for (int k = n; k > 0; k >>= 1) {
+    for (int b = 0; b < 31; ++b) {  // a constant trip count: unrolls once n is known
+        int k = n >> b;
+        if (k == 0) break;
         if (k & 1) {
             real t = ar * br - ai * bi;
             ai = ar * bi + ai * br;
             ar = t;
         }
-        real s = br * br - bi * bi;
-        bi = 2.0f * br * bi;
-        br = s;
+        if (k > 1) {
+            real s = br * br - bi * bi;
+            bi = 2.0f * br * bi;
+            br = s;
+        }
     }
     *out_re = ar;
     *out_im = ai;
+}
+
+// (a + i rho)^n = A + i B rho from a and rho^2 alone: the products of
+// numbers of the form p + i q rho stay of that form
+// ((p + i q rho)(u + i v rho) = pu - qv rho^2 + i (pv + qu) rho), so the
+// power needs no square root; B is returned, the caller multiplies by rho.
+inline __attribute__((always_inline)) void cpow_int_rho(real a, real rho2, int n, real* out_re, real* out_b)
+{
+    real ar = 1.0f, ab = 0.0f;
+    real br = a, bb = 1.0f;
+    for (int b = 0; b < 31; ++b) {
+        int k = n >> b;
+        if (k == 0) break;
+        if (k & 1) {
+            real t = ar * br - ab * bb * rho2;
+            ab = ar * bb + ab * br;
+            ar = t;
+        }
+        if (k > 1) {
+            real s = br * br - bb * bb * rho2;
+            bb = 2.0f * br * bb;
+            br = s;
+        }
+    }
+    *out_re = ar;
+    *out_b = ab;
 }
 
 //! fn ipow_real
@@ -88,9 +118,11 @@ inline __attribute__((always_inline)) real ipow_real(real x, int n)
 {
     real acc = 1.0f;
     real base = x;
-    for (int k = n; k > 0; k >>= 1) {
+    for (int b = 0; b < 31; ++b) {  // a constant trip count: unrolls once n is known
+        int k = n >> b;
+        if (k == 0) break;
         if (k & 1) acc = acc * base;
-        base = base * base;
+        if (k > 1) base = base * base;
     }
     return acc;
 }
@@ -102,16 +134,33 @@ inline __attribute__((always_inline)) real ipow_real(real x, int n)
 // cos t = z/r, sin t = rho/r (rho = |(x, y)|) and cos f = x/rho,
 // sin f = y/rho, (z + i rho)^n = r^n (cos nt + i sin nt) needs no division,
 // and the azimuth's multiples come from ((x + i y)/rho)^n. One square root
-// and one division per step (the caller's r is the orbit's own).
+// and one division per step (the caller's r is the orbit's own); for even n
+// neither the root nor the division sits on the chain from z to z^n.
 // Returns z^n and sets *r_pow_n_minus_1 = r^(n-1) for the derivative.
 inline __attribute__((always_inline)) vec3 bulb_power_int_r(vec3 z, real r, int n, real* r_pow_n_minus_1)
 {
-    real rho = sqrt(z.x * z.x + z.y * z.y);
-    mask on_axis = rho < 1e-20f;  // on the z axis the azimuth is 0, as in the trig formula
-    real inv_rho = 1.0f / fmax(rho, K(1e-20f));
     real rn_cos_nt, rn_sin_nt, cos_nf, sin_nf;
-    cpow_int(z.z, rho, n, &rn_cos_nt, &rn_sin_nt);
-    cpow_int(SEL(z.x * inv_rho, (real)(1.0f), on_axis), SEL(z.y * inv_rho, (real)(0.0f), on_axis), n, &cos_nf, &sin_nf);
+    if ((n & 1) == 0) {
+        // Even n: nothing on the step's critical path waits for a square
+        // root. The azimuth's multiples are ((x + i y)^2 / rho^2)^(n/2)
+        // (one division by rho^2), the polar part comes from rho^2
+        // (cpow_int_rho), and sqrt(rho^2) runs alongside, needed only at
+        // the last multiply.
+        real rho2 = z.x * z.x + z.y * z.y;
+        mask on_axis = rho2 < 1e-36f;  // on the z axis the azimuth is 0, as in the trig formula
+        real inv_rho2 = 1.0f / fmax(rho2, K(1e-36f));
+        real b;
+        cpow_int_rho(z.z, rho2, n, &rn_cos_nt, &b);
+        rn_sin_nt = b * sqrt(rho2);
+        cpow_int(SEL((z.x * z.x - z.y * z.y) * inv_rho2, (real)(1.0f), on_axis),
+                 SEL(2.0f * z.x * z.y * inv_rho2, (real)(0.0f), on_axis), n / 2, &cos_nf, &sin_nf);
+    } else {
+        real rho = sqrt(z.x * z.x + z.y * z.y);
+        mask on_axis = rho < 1e-20f;
+        real inv_rho = 1.0f / fmax(rho, K(1e-20f));
+        cpow_int(z.z, rho, n, &rn_cos_nt, &rn_sin_nt);
+        cpow_int(SEL(z.x * inv_rho, (real)(1.0f), on_axis), SEL(z.y * inv_rho, (real)(0.0f), on_axis), n, &cos_nf, &sin_nf);
+    }
     *r_pow_n_minus_1 = ipow_real(r, n - 1);
     return v3(rn_sin_nt * cos_nf, rn_sin_nt * sin_nf, rn_cos_nt);
 }
