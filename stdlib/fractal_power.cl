@@ -2,13 +2,15 @@
 //! class: helper
 // x^n for a non-negative integer n known when the kernel is built, by
 // square-and-multiply: no power function, no log/exp.
-inline real ipow_real(real x, int n)
+inline __attribute__((always_inline)) real ipow_real(real x, int n)
 {
     real acc = 1.0f;
     real base = x;
-    for (int k = n; k > 0; k >>= 1) {
+    for (int b = 0; b < 31; ++b) {  // a constant trip count: unrolls once n is known
+        int k = n >> b;
+        if (k == 0) break;
         if (k & 1) acc = acc * base;
-        base = base * base;
+        if (k > 1) base = base * base;
     }
     return acc;
 }
@@ -17,23 +19,57 @@ inline real ipow_real(real x, int n)
 //! class: helper
 // (re + i im)^n by square-and-multiply. For a unit complex number
 // cos t + i sin t this gives cos nt and sin nt without trig (de Moivre):
-// the Chebyshev recurrences evaluated by repeated squaring.
-inline void cpow_int(real re, real im, int n, real* out_re, real* out_im)
+// the Chebyshev recurrences evaluated by repeated squaring. This chain
+// (cpow_int, ipow_real, bulb_power_int_r, de_mandelbulb_int) is always
+// inlined so that n arrives as a constant and the loop unrolls to a few
+// multiplies; called out of line it branched on the bits of n every step
+// (7% of the Mandelbulb frame).
+inline __attribute__((always_inline)) void cpow_int(real re, real im, int n, real* out_re, real* out_im)
 {
     real ar = 1.0f, ai = 0.0f;
     real br = re, bi = im;
-    for (int k = n; k > 0; k >>= 1) {
+    for (int b = 0; b < 31; ++b) {  // a constant trip count: unrolls once n is known
+        int k = n >> b;
+        if (k == 0) break;
         if (k & 1) {
             real t = ar * br - ai * bi;
             ai = ar * bi + ai * br;
             ar = t;
         }
-        real s = br * br - bi * bi;
-        bi = 2.0f * br * bi;
-        br = s;
+        if (k > 1) {
+            real s = br * br - bi * bi;
+            bi = 2.0f * br * bi;
+            br = s;
+        }
     }
     *out_re = ar;
     *out_im = ai;
+}
+
+// (a + i rho)^n = A + i B rho from a and rho^2 alone: the products of
+// numbers of the form p + i q rho stay of that form
+// ((p + i q rho)(u + i v rho) = pu - qv rho^2 + i (pv + qu) rho), so the
+// power needs no square root; B is returned, the caller multiplies by rho.
+inline __attribute__((always_inline)) void cpow_int_rho(real a, real rho2, int n, real* out_re, real* out_b)
+{
+    real ar = 1.0f, ab = 0.0f;
+    real br = a, bb = 1.0f;
+    for (int b = 0; b < 31; ++b) {
+        int k = n >> b;
+        if (k == 0) break;
+        if (k & 1) {
+            real t = ar * br - ab * bb * rho2;
+            ab = ar * bb + ab * br;
+            ar = t;
+        }
+        if (k > 1) {
+            real s = br * br - bb * bb * rho2;
+            bb = 2.0f * br * bb;
+            br = s;
+        }
+    }
+    *out_re = ar;
+    *out_b = ab;
 }
 
 //! fn bulb_power_int
@@ -43,16 +79,33 @@ inline void cpow_int(real re, real im, int n, real* out_re, real* out_im)
 // cos t = z/r, sin t = rho/r (rho = |(x, y)|) and cos f = x/rho,
 // sin f = y/rho, (z + i rho)^n = r^n (cos nt + i sin nt) needs no division,
 // and the azimuth's multiples come from ((x + i y)/rho)^n. One square root
-// and one division per step (the caller's r is the orbit's own).
+// and one division per step (the caller's r is the orbit's own); for even n
+// neither the root nor the division sits on the chain from z to z^n.
 // Returns z^n and sets *r_pow_n_minus_1 = r^(n-1) for the derivative.
-inline vec3 bulb_power_int_r(vec3 z, real r, int n, real* r_pow_n_minus_1)
+inline __attribute__((always_inline)) vec3 bulb_power_int_r(vec3 z, real r, int n, real* r_pow_n_minus_1)
 {
-    real rho = sqrt(z.x * z.x + z.y * z.y);
-    mask on_axis = rho < 1e-20f;  // on the z axis the azimuth is 0, as in the trig formula
-    real inv_rho = 1.0f / fmax(rho, K(1e-20f));
     real rn_cos_nt, rn_sin_nt, cos_nf, sin_nf;
-    cpow_int(z.z, rho, n, &rn_cos_nt, &rn_sin_nt);
-    cpow_int(SEL(z.x * inv_rho, (real)(1.0f), on_axis), SEL(z.y * inv_rho, (real)(0.0f), on_axis), n, &cos_nf, &sin_nf);
+    if ((n & 1) == 0) {
+        // Even n: nothing on the step's critical path waits for a square
+        // root. The azimuth's multiples are ((x + i y)^2 / rho^2)^(n/2)
+        // (one division by rho^2), the polar part comes from rho^2
+        // (cpow_int_rho), and sqrt(rho^2) runs alongside, needed only at
+        // the last multiply.
+        real rho2 = z.x * z.x + z.y * z.y;
+        mask on_axis = rho2 < 1e-36f;  // on the z axis the azimuth is 0, as in the trig formula
+        real inv_rho2 = 1.0f / fmax(rho2, K(1e-36f));
+        real b;
+        cpow_int_rho(z.z, rho2, n, &rn_cos_nt, &b);
+        rn_sin_nt = b * sqrt(rho2);
+        cpow_int(SEL((z.x * z.x - z.y * z.y) * inv_rho2, (real)(1.0f), on_axis),
+                 SEL(2.0f * z.x * z.y * inv_rho2, (real)(0.0f), on_axis), n / 2, &cos_nf, &sin_nf);
+    } else {
+        real rho = sqrt(z.x * z.x + z.y * z.y);
+        mask on_axis = rho < 1e-20f;
+        real inv_rho = 1.0f / fmax(rho, K(1e-20f));
+        cpow_int(z.z, rho, n, &rn_cos_nt, &rn_sin_nt);
+        cpow_int(SEL(z.x * inv_rho, (real)(1.0f), on_axis), SEL(z.y * inv_rho, (real)(0.0f), on_axis), n, &cos_nf, &sin_nf);
+    }
     *r_pow_n_minus_1 = ipow_real(r, n - 1);
     return v3(rn_sin_nt * cos_nf, rn_sin_nt * sin_nf, rn_cos_nt);
 }
@@ -71,7 +124,7 @@ inline vec3 bulb_power_int(vec3 z, int n, real* r_pow_n_minus_1)
 // running-derivative estimator d = 0.5 log(r) r / dr with the trig-free
 // power. dr <- n r^(n-1) dr (+ 1 for the Mandelbulb, whose c depends on p).
 // Outside 1.5x the set radius it returns the distance to that ball.
-inline real de_mandelbulb_int(vec3 p, int power, int iterations, real bailout, real set_radius, int julia, vec3 c)
+inline __attribute__((always_inline)) real de_mandelbulb_int(vec3 p, int power, int iterations, real bailout, real set_radius, int julia, vec3 c)
 {
     vec3 add = julia ? c : p;
     real dr_add = julia ? 0.0f : 1.0f;

@@ -51,7 +51,7 @@ inline real trap_mandelbulb(vec3 p, real power, int iterations, real bailout, in
 // trap_mandelbulb for an integer power known at build time: the same orbit
 // by the trig-free power (de Moivre), so the trap costs about one distance
 // evaluation instead of ten rounds of acos, atan2, pow, sin and cos.
-inline real trap_mandelbulb_int(vec3 p, int power, int iterations, real bailout, int julia, vec3 c, real* iter)
+inline __attribute__((always_inline)) real trap_mandelbulb_int(vec3 p, int power, int iterations, real bailout, int julia, vec3 c, real* iter)
 {
     vec3 add = julia ? c : p;
     vec3 z = p;
