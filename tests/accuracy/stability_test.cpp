@@ -6,6 +6,8 @@
 #include <sdfrt/image_metrics.hpp>
 #include <sdfrt/renderer.hpp>
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <functional>
 #include <iostream>
@@ -115,9 +117,13 @@ TEST(Stability, UncorrectedTwistAndDisplaceOvershootUntilTheAuditsStepFactor) {
 TEST(Stability, TinyNormalStepIsNoisyInFloat) {
   const std::string scene = std::string("camera: {position: [3, -3, 0.5], target: [3, 0, 0], up: [0, 0, 1], fov: 40}\n") + kLight +
                             "scene: {sphere: {radius: 0.8}, translate: [3, 0, 0]}\n";
-  auto tiny = against_reference(scene, [](ir::Module& m) { m.plan.march.normal_step = 1e-6; });
+  auto tiny = against_reference(scene, [](ir::Module& m) {
+    m.plan.march.normal_step = 1e-6;
+    m.plan.march.normal_step_floor = 1e-12;  // as render.normal_step in the scene sets it
+  });
   auto tiny_double = against_reference(scene, [](ir::Module& m) {
     m.plan.march.normal_step = 1e-6;
+    m.plan.march.normal_step_floor = 1e-12;
     m.plan.march.precision = ir::Precision::Double;
   });
   auto footprint = against_reference(scene, [](ir::Module&) {});
@@ -125,6 +131,30 @@ TEST(Stability, TinyNormalStepIsNoisyInFloat) {
   EXPECT_LT(tiny_double.normal_error_deg_median, 2.0);
   EXPECT_LT(footprint.normal_error_deg_median, 2.0);
   EXPECT_EQ(tiny.holes_pct, 0.0);  // the surface is found all the same
+}
+
+// Float at a deep Mandelbulb zoom: the camera 0.05 from a surface point
+// (|p| ~ 0.87, where a float resolves 6e-8), the field of view narrowed so a
+// pixel's footprint is 7e-6 (shallow) or 7e-9 (deep). With footprint-scaled
+// normals (render.normal_step given, so no 1e-6 floor) float is as good as
+// double when shallow and breaks when deep; double holds.
+TEST(Stability, DeepMandelbulbZoomNeedsDouble) {
+  auto scene = [](double fov) {
+    return fmt::format("camera: {{position: [0, -0.89940840, 0.20755579], target: [0, -0.85068884, 0.19631281], "
+                       "up: [0, 0, 1], fov: {}}}\nrender: {{normal_step: 0.5}}\n{}"
+                       "scene: {{mandelbulb: {{power: 8, iterations: 10, bailout: 2}}}}\n",
+                       fov, kLight);
+  };
+  auto as_double = [](ir::Module& m) { m.plan.march.precision = ir::Precision::Double; };
+  auto shallow_f = against_reference(scene(0.45), [](ir::Module&) {});
+  auto shallow_d = against_reference(scene(0.45), as_double);
+  auto deep_f = against_reference(scene(0.00045), [](ir::Module&) {});
+  auto deep_d = against_reference(scene(0.00045), as_double);
+  EXPECT_LT(shallow_f.normal_error_deg_median, shallow_d.normal_error_deg_median + 1.0);
+  EXPECT_GT(deep_f.normal_error_deg_median, 20.0);
+  EXPECT_LT(deep_d.normal_error_deg_median, 2.0);
+  EXPECT_LT(deep_f.ssim, 0.5);
+  EXPECT_GT(deep_d.ssim, 0.9);
 }
 
 // A floor seen at a grazing angle: rays near the horizon creep towards it

@@ -50,6 +50,10 @@ struct MarchSettings {
   double gamma = 2.2;
   NormalMethod normals = NormalMethod::Tetrahedral;
   double normal_step = 0.5;  // finite-difference normal step, in pixel footprints at the hit
+  // The smallest step in world units. 1e-6 unless render.normal_step is
+  // given (then 1e-12): the 1e-6 floor smooths the normals of deep zooms,
+  // in double too.
+  double normal_step_floor = 1e-6;
   // After a hit, bracket the surface and bisect it (the reference render).
   enum class Refine { None, Bisection } refine = Refine::None;
   // Anti-aliasing: jittered samples per pixel and the reconstruction filter
@@ -74,6 +78,7 @@ inline void make_reference(MarchSettings& s) {
   s.refine = MarchSettings::Refine::Bisection;
   if (s.normals != NormalMethod::Dual) s.normals = NormalMethod::Central;
   s.normal_step = 0.5;
+  s.normal_step_floor = 1e-12;
   s.dither = false;
 }
 
