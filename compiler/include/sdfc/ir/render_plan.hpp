@@ -67,12 +67,17 @@ struct MarchSettings {
 };
 
 // The reference render (sdfc render --reference, issue 6): the same view,
-// slow but trustworthy: double precision, hits within 1e-6 of the pixel
-// footprint, 20000 steps of half the distance, every hit bisected,
-// central-difference normals (dual normals stay: they are exact already).
-inline void make_reference(MarchSettings& s) {
+// slow but trustworthy: double precision, a small hit epsilon (in pixel
+// footprints), 20000 steps of half the distance, every hit bisected.
+// It answers: which surface does the pixel centre see, and its normal at
+// the pixel's scale - central differences in double with the render's
+// default step (0.5 px, no world-unit floor) at the bisected hit, so the
+// normal is the one a render resolves, not sub-pixel detail (dual normals
+// stay: they are exact already).
+inline constexpr double kReferenceHitEpsilon = 1e-6;
+inline void make_reference(MarchSettings& s, double hit_epsilon = kReferenceHitEpsilon) {
   s.precision = Precision::Double;
-  s.hit_epsilon = 1e-6;
+  s.hit_epsilon = hit_epsilon;
   s.max_steps = 20000;
   s.step_factor = 0.5;
   s.refine = MarchSettings::Refine::Bisection;
