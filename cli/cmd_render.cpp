@@ -206,7 +206,7 @@ Action add_render(CLI::App& app) {
                   "Build this OpenCL file instead of the generated kernel (a hand-edited 'sdfc compile' output "
                   "for the same scene and --simd-width)");
   cmd->add_flag("--reference", a->reference,
-                "Reference render of the same view: double precision, hit epsilon 1e-6 px, 20000 steps, step factor "
+                "Reference render of the same view: double precision, hit epsilon 0.01 px, 20000 steps, step factor "
                 "0.5, bisection of every hit, central normals; writes the depth, normal and hit AOVs (slow)");
   cmd->add_option("--reference-epsilon", a->reference_epsilon,
                   "The reference's hit epsilon in pixel footprints (a convergence check: the reference is trusted "

@@ -1,5 +1,5 @@
 // Where sphere tracing fails, shown on real kernels (PoCL) against the
-// reference render (ir::make_reference: double, 1e-6 px, bisection), and the
+// reference render (ir::make_reference: double, 0.01 px, bisection), and the
 // fix for each: the audit's step factor against overshoot, the footprint-
 // scaled normal step against float noise, more steps against grazing holes.
 #include <gtest/gtest.h>

@@ -74,7 +74,7 @@ struct MarchSettings {
 // default step (0.5 px, no world-unit floor) at the bisected hit, so the
 // normal is the one a render resolves, not sub-pixel detail (dual normals
 // stay: they are exact already).
-inline constexpr double kReferenceHitEpsilon = 1e-6;
+inline constexpr double kReferenceHitEpsilon = 0.01;  // px; why: docs/accuracy.md
 inline void make_reference(MarchSettings& s, double hit_epsilon = kReferenceHitEpsilon) {
   s.precision = Precision::Double;
   s.hit_epsilon = hit_epsilon;
