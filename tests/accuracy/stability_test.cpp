@@ -170,5 +170,19 @@ TEST(Stability, TooFewStepsLeaveHolesAtGrazingAngles) {
   EXPECT_LT(enough.holes_pct, 0.1 * few.holes_pct);
 }
 
+// The reference's hit epsilon (0.01 px) is converged on the Mandelbulb: a
+// 10x smaller one changes the hit mask and the depth far less than the
+// render's 0.5 px does (docs/accuracy.md, the convergence check).
+TEST(Reference, HitEpsilonConvergesOnTheMandelbulb) {
+  const std::string scene = std::string("camera: {position: [0, -2.6, 0.6], target: [0, 0, 0], up: [0, 0, 1], fov: 45}\n") +
+                            kLight + "scene: {mandelbulb: {power: 8, iterations: 10, bailout: 2}}\n";
+  auto ref_at = [](double eps) { return [eps](ir::Module& m) { ir::make_reference(m.plan.march, eps); }; };
+  auto tenth = against_reference(scene, ref_at(0.1 * ir::kReferenceHitEpsilon));
+  auto coarse = against_reference(scene, ref_at(50 * ir::kReferenceHitEpsilon));  // 0.5 px, in double
+  EXPECT_LT(tenth.hit_mask_disagreement_pct, 0.5);
+  EXPECT_GT(coarse.hit_mask_disagreement_pct, 4 * tenth.hit_mask_disagreement_pct);
+  EXPECT_LT(tenth.depth_rel_error_median, 0.2 * coarse.depth_rel_error_median);
+}
+
 }  // namespace
 }  // namespace sdfc
