@@ -59,11 +59,12 @@ struct RenderArgs {
   double fps = 30;
   std::string kernel_file;  // a hand-edited kernel to build instead of the generated one
   bool reference = false;
+  double reference_epsilon = ir::kReferenceHitEpsilon;
 };
 
 // --reference: ir::make_reference, plus the depth, normal and hit AOVs.
-void make_reference(ir::MarchSettings& s, std::vector<std::string>& aovs) {
-  ir::make_reference(s);
+void make_reference(ir::MarchSettings& s, double eps, std::vector<std::string>& aovs) {
+  ir::make_reference(s, eps);
   for (const char* a : {"depth", "normal", "hit"})
     if (std::find(aovs.begin(), aovs.end(), a) == aovs.end()) aovs.push_back(a);
 }
@@ -96,7 +97,7 @@ int run_render(RenderArgs a) {
   if (a.height > 0) a.scene.sets.push_back(fmt::format("render.height={}", a.height));
   SourceValue doc = load_scene_source(a.scene.path, a.scene.sets);
   ir::Module m = build_module(doc, a.scene.path);
-  if (a.reference) make_reference(m.plan.march, a.aovs);
+  if (a.reference) make_reference(m.plan.march, a.reference_epsilon, a.aovs);
 
   std::signal(SIGABRT, on_driver_abort);
   sdfrt::Device device = sdfrt::open_device(a.device.empty() ? std::nullopt : std::optional<std::string>(a.device));
@@ -216,8 +217,12 @@ Action add_render(CLI::App& app) {
                   "Build this OpenCL file instead of the generated kernel (a hand-edited 'sdfc compile' output "
                   "for the same scene, --simd-width and --packet-rows)");
   cmd->add_flag("--reference", a->reference,
-                "Reference render of the same view: double precision, hit epsilon 1e-6 px, 20000 steps, step factor "
+                "Reference render of the same view: double precision, hit epsilon 0.01 px, 20000 steps, step factor "
                 "0.5, bisection of every hit, central normals; writes the depth, normal and hit AOVs (slow)");
+  cmd->add_option("--reference-epsilon", a->reference_epsilon,
+                  "The reference's hit epsilon in pixel footprints (a convergence check: the reference is trusted "
+                  "where a 10x smaller value changes nothing)")
+      ->check(CLI::Range(1e-12, 1.0));
   return [a] { return run_render(*a); };
 }
 

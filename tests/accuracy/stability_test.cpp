@@ -1,10 +1,12 @@
 // Where sphere tracing fails, shown on real kernels (PoCL) against the
-// reference render (ir::make_reference: double, 1e-6 px, bisection), and the
+// reference render (ir::make_reference: double, 0.01 px, bisection), and the
 // fix for each: the audit's step factor against overshoot, the footprint-
 // scaled normal step against float noise, more steps against grazing holes.
 #include <gtest/gtest.h>
 #include <sdfrt/image_metrics.hpp>
 #include <sdfrt/renderer.hpp>
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <functional>
@@ -115,9 +117,13 @@ TEST(Stability, UncorrectedTwistAndDisplaceOvershootUntilTheAuditsStepFactor) {
 TEST(Stability, TinyNormalStepIsNoisyInFloat) {
   const std::string scene = std::string("camera: {position: [3, -3, 0.5], target: [3, 0, 0], up: [0, 0, 1], fov: 40}\n") + kLight +
                             "scene: {sphere: {radius: 0.8}, translate: [3, 0, 0]}\n";
-  auto tiny = against_reference(scene, [](ir::Module& m) { m.plan.march.normal_step = 1e-6; });
+  auto tiny = against_reference(scene, [](ir::Module& m) {
+    m.plan.march.normal_step = 1e-6;
+    m.plan.march.normal_step_floor = 1e-12;  // as render.normal_step in the scene sets it
+  });
   auto tiny_double = against_reference(scene, [](ir::Module& m) {
     m.plan.march.normal_step = 1e-6;
+    m.plan.march.normal_step_floor = 1e-12;
     m.plan.march.precision = ir::Precision::Double;
   });
   auto footprint = against_reference(scene, [](ir::Module&) {});
@@ -125,6 +131,30 @@ TEST(Stability, TinyNormalStepIsNoisyInFloat) {
   EXPECT_LT(tiny_double.normal_error_deg_median, 2.0);
   EXPECT_LT(footprint.normal_error_deg_median, 2.0);
   EXPECT_EQ(tiny.holes_pct, 0.0);  // the surface is found all the same
+}
+
+// Float at a deep Mandelbulb zoom: the camera 0.05 from a surface point
+// (|p| ~ 0.87, where a float resolves 6e-8), the field of view narrowed so a
+// pixel's footprint is 7e-6 (shallow) or 7e-9 (deep). With footprint-scaled
+// normals (render.normal_step given, so no 1e-6 floor) float is as good as
+// double when shallow and breaks when deep; double holds.
+TEST(Stability, DeepMandelbulbZoomNeedsDouble) {
+  auto scene = [](double fov) {
+    return fmt::format("camera: {{position: [0, -0.89940840, 0.20755579], target: [0, -0.85068884, 0.19631281], "
+                       "up: [0, 0, 1], fov: {}}}\nrender: {{normal_step: 0.5}}\n{}"
+                       "scene: {{mandelbulb: {{power: 8, iterations: 10, bailout: 2}}}}\n",
+                       fov, kLight);
+  };
+  auto as_double = [](ir::Module& m) { m.plan.march.precision = ir::Precision::Double; };
+  auto shallow_f = against_reference(scene(0.45), [](ir::Module&) {});
+  auto shallow_d = against_reference(scene(0.45), as_double);
+  auto deep_f = against_reference(scene(0.00045), [](ir::Module&) {});
+  auto deep_d = against_reference(scene(0.00045), as_double);
+  EXPECT_LT(shallow_f.normal_error_deg_median, shallow_d.normal_error_deg_median + 1.0);
+  EXPECT_GT(deep_f.normal_error_deg_median, 20.0);
+  EXPECT_LT(deep_d.normal_error_deg_median, 2.0);
+  EXPECT_LT(deep_f.ssim, 0.5);
+  EXPECT_GT(deep_d.ssim, 0.9);
 }
 
 // A floor seen at a grazing angle: rays near the horizon creep towards it
@@ -138,6 +168,20 @@ TEST(Stability, TooFewStepsLeaveHolesAtGrazingAngles) {
   auto enough = against_reference(scene, [](ir::Module& m) { m.plan.march.max_steps = 1024; });
   EXPECT_GT(few.holes_pct, 2.0);
   EXPECT_LT(enough.holes_pct, 0.1 * few.holes_pct);
+}
+
+// The reference's hit epsilon (0.01 px) is converged on the Mandelbulb: a
+// 10x smaller one changes the hit mask and the depth far less than the
+// render's 0.5 px does (docs/accuracy.md, the convergence check).
+TEST(Reference, HitEpsilonConvergesOnTheMandelbulb) {
+  const std::string scene = std::string("camera: {position: [0, -2.6, 0.6], target: [0, 0, 0], up: [0, 0, 1], fov: 45}\n") +
+                            kLight + "scene: {mandelbulb: {power: 8, iterations: 10, bailout: 2}}\n";
+  auto ref_at = [](double eps) { return [eps](ir::Module& m) { ir::make_reference(m.plan.march, eps); }; };
+  auto tenth = against_reference(scene, ref_at(0.1 * ir::kReferenceHitEpsilon));
+  auto coarse = against_reference(scene, ref_at(50 * ir::kReferenceHitEpsilon));  // 0.5 px, in double
+  EXPECT_LT(tenth.hit_mask_disagreement_pct, 0.5);
+  EXPECT_GT(coarse.hit_mask_disagreement_pct, 4 * tenth.hit_mask_disagreement_pct);
+  EXPECT_LT(tenth.depth_rel_error_median, 0.2 * coarse.depth_rel_error_median);
 }
 
 }  // namespace

@@ -139,11 +139,11 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
   w.open("{");
   w.line("// shading runs once per packet with a hit, never inside the march");
   w.line("vec3 pos = v3_mad(ro, rd, t);");
-  if (s.normal_step == 0.5)
+  if (s.normal_step == 0.5 && s.normal_step_floor == 1e-6)
     w.line("real h = fmax(pixel_angle * t * 0.5f, K(1e-6f));  // finite-difference step: half a pixel footprint");
   else
-    w.line(fmt::format("real h = fmax(pixel_angle * t * {}, K(1e-12f));  // render.normal_step: {} pixel footprints",
-                       lit.real(s.normal_step), s.normal_step));
+    w.line(fmt::format("real h = fmax(pixel_angle * t * {}, K({}));  // render.normal_step: {} pixel footprints",
+                       lit.real(s.normal_step), lit.real(s.normal_step_floor), s.normal_step));
   if (s.normals == ir::NormalMethod::Dual) {
     w.line("n = scene_normal_dual(pos);  // exact gradient by forward-mode differentiation");
   } else {

@@ -102,6 +102,7 @@ void read_render(ValueReader& r, const SourceValue& v, ir::MarchSettings& s) {
   s.normals = normals == "central" ? ir::NormalMethod::Central
               : normals == "dual"  ? ir::NormalMethod::Dual
                                    : ir::NormalMethod::Tetrahedral;
+  if (v.find("normal_step")) s.normal_step_floor = 1e-12;  // a chosen step is taken as it is
   s.normal_step = m.number("normal_step", s.normal_step, {0, 100, true});
   s.refine = m.word("refine", "none", {"none", "bisection"}) == "bisection" ? ir::MarchSettings::Refine::Bisection
                                                                              : ir::MarchSettings::Refine::None;
