@@ -196,7 +196,7 @@ TEST(Specialisation, MaterialBlendOnlyForSmoothBlendsOfDifferentMaterials) {
        }) {
     std::string k = kernel_for(scene);
     for (const char* c : blend_code) EXPECT_NE(k.find(c), std::string::npos) << c << " missing in the kernel of\n" << scene;
-    size_t dist = k.find("real scene_dist(vec3 p)"), dist_end = k.find("\n}\n", dist);
+    size_t dist = k.find("real scene_dist(TIME_PARAM vec3 p)"), dist_end = k.find("\n}\n", dist);
     ASSERT_NE(dist, std::string::npos);
     EXPECT_EQ(k.substr(dist, dist_end - dist).find("mat_"), std::string::npos) << "blend code in the march";
     EXPECT_EQ(k.find("scene_dist_mat(TIME_ARG pos, &id)"), std::string::npos) << scene;
