@@ -132,8 +132,44 @@ inline vec3 plane_fold(vec3 z, vec3 n)
 // The matrix with rows r0, r1, r2 applied to a.
 inline vec3 v3_rows(vec3 a, vec3 r0, vec3 r1, vec3 r2) { return v3(v3_dot(r0, a), v3_dot(r1, a), v3_dot(r2, a)); }
 
-//! fn de_kifs
+//! fn kifs_step
 //! deps: vec3_ops, tetra_fold, plane_fold, v3_rows
+//! class: helper
+// One step of the kaleidoscopic IFS: rotate (rows b0..b2), fold by the
+// symmetry group (n1, n2: the icosahedral mirror normals), scale about
+// `offset`, rotate (rows a0..a2). Shared by de_kifs and trap_kifs.
+inline vec3 kifs_step(vec3 z, int symmetry, real scale, vec3 offset, vec3 n1, vec3 n2,
+                      vec3 b0, vec3 b1, vec3 b2, vec3 a0, vec3 a1, vec3 a2)
+{
+    z = v3_rows(z, b0, b1, b2);
+    if (symmetry == 0) {
+        z = tetra_fold(z);
+    } else if (symmetry == 2) {
+        for (int k = 0; k < 3; ++k) {
+            z = v3_abs(z);
+            z = plane_fold(z, n1);
+            z = plane_fold(z, n2);
+        }
+    } else {
+        z = v3_abs(z);
+        real hi = fmax(z.x, z.y), lo = fmin(z.x, z.y);
+        z.x = hi; z.y = lo;
+        hi = fmax(z.x, z.z); lo = fmin(z.x, z.z);
+        z.x = hi; z.z = lo;
+        hi = fmax(z.y, z.z); lo = fmin(z.y, z.z);
+        z.y = hi; z.z = lo;
+    }
+    z = v3_sub(v3_scale(z, scale), v3_scale(offset, scale - 1.0f));
+    if (symmetry == 3) {
+        real shift = offset.z * (scale - 1.0f);
+        z.z = SEL(z.z, z.z + shift, z.z < -0.5f * shift);
+    }
+    z = v3_rows(z, a0, a1, a2);
+    return z;
+}
+
+//! fn de_kifs
+//! deps: vec3_ops, kifs_step
 //! class: estimate
 // Knighty's kaleidoscopic IFS (seed 001 part IV): per iteration rotate
 // (rows b0..b2), fold into the fundamental domain of the symmetry group
@@ -153,30 +189,7 @@ inline real de_kifs(vec3 p, int symmetry, real scale, vec3 offset, int iteration
     vec3 z = p;
     real s = 1.0f;
     for (int i = 0; i < iterations; ++i) {
-        z = v3_rows(z, b0, b1, b2);
-        if (symmetry == 0) {
-            z = tetra_fold(z);
-        } else if (symmetry == 2) {
-            for (int k = 0; k < 3; ++k) {
-                z = v3_abs(z);
-                z = plane_fold(z, n1);
-                z = plane_fold(z, n2);
-            }
-        } else {
-            z = v3_abs(z);
-            real hi = fmax(z.x, z.y), lo = fmin(z.x, z.y);
-            z.x = hi; z.y = lo;
-            hi = fmax(z.x, z.z); lo = fmin(z.x, z.z);
-            z.x = hi; z.z = lo;
-            hi = fmax(z.y, z.z); lo = fmin(z.y, z.z);
-            z.y = hi; z.z = lo;
-        }
-        z = v3_sub(v3_scale(z, scale), v3_scale(offset, scale - 1.0f));
-        if (symmetry == 3) {
-            real shift = offset.z * (scale - 1.0f);
-            z.z = SEL(z.z, z.z + shift, z.z < -0.5f * shift);
-        }
-        z = v3_rows(z, a0, a1, a2);
+        z = kifs_step(z, symmetry, scale, offset, n1, n2, b0, b1, b2, a0, a1, a2);
         s = s * scale;
     }
     return (v3_length(z) - v3_length(offset)) / s;

@@ -173,7 +173,7 @@ inline real trap_sierpinski(vec3 p, int iterations, real scale, real* iter)
 }
 
 //! fn trap_kifs
-//! deps: vec3_ops, tetra_fold, plane_fold, v3_rows
+//! deps: vec3_ops, kifs_step
 //! class: helper
 // Orbit trap of the kaleidoscopic IFS (the steps of de_kifs); *iter is 1
 // (no escape).
@@ -186,30 +186,7 @@ inline real trap_kifs(vec3 p, int symmetry, real scale, vec3 offset, int iterati
     vec3 z = p;
     real trap = 1e10f;
     for (int i = 0; i < iterations; ++i) {
-        z = v3_rows(z, b0, b1, b2);
-        if (symmetry == 0) {
-            z = tetra_fold(z);
-        } else if (symmetry == 2) {
-            for (int k = 0; k < 3; ++k) {
-                z = v3_abs(z);
-                z = plane_fold(z, n1);
-                z = plane_fold(z, n2);
-            }
-        } else {
-            z = v3_abs(z);
-            real hi = fmax(z.x, z.y), lo = fmin(z.x, z.y);
-            z.x = hi; z.y = lo;
-            hi = fmax(z.x, z.z); lo = fmin(z.x, z.z);
-            z.x = hi; z.z = lo;
-            hi = fmax(z.y, z.z); lo = fmin(z.y, z.z);
-            z.y = hi; z.z = lo;
-        }
-        z = v3_sub(v3_scale(z, scale), v3_scale(offset, scale - 1.0f));
-        if (symmetry == 3) {
-            real shift = offset.z * (scale - 1.0f);
-            z.z = SEL(z.z, z.z + shift, z.z < -0.5f * shift);
-        }
-        z = v3_rows(z, a0, a1, a2);
+        z = kifs_step(z, symmetry, scale, offset, n1, n2, b0, b1, b2, a0, a1, a2);
         trap = fmin(trap, fmin(fabs(z.x), fmin(fabs(z.y), fabs(z.z))));
     }
     *iter = (real)(1.0f);
