@@ -1,6 +1,7 @@
 #include <sdfrt/renderer.hpp>
 
 #include "device/cl_check.hpp"
+#include "renderer/launch_shape.hpp"
 #include "renderer/tile_plan.hpp"
 
 #include <fmt/format.h>
@@ -152,8 +153,10 @@ FloatImage Renderer::render(const std::vector<float>& frame, int width, int heig
 
     const std::size_t global[2] = {static_cast<std::size_t>(groups_x),
                                    static_cast<std::size_t>(groups_y)};
+    const auto local = launch_local_size(device_->info().type, spec_.simd_width, global[0], global[1]);
     cl_event raw_event = nullptr;
-    check_cl(clEnqueueNDRangeKernel(device_->queue(), kernel.get(), 2, nullptr, global, nullptr, 0,
+    check_cl(clEnqueueNDRangeKernel(device_->queue(), kernel.get(), 2, nullptr, global,
+                                    local ? local->data() : nullptr, 0,
                                     nullptr, &raw_event),
              fmt::format("clEnqueueNDRangeKernel({}, tile {}x{} at {},{})", kernel.name(),
                          tile.width, tile.height, tile.x0, tile.y0));
