@@ -8,19 +8,18 @@
 
 namespace sdfrt {
 
-// The local size for a launch of groups_x x groups_y work-items, or nullopt
-// to let the driver choose (GPUs, where the driver knows its wavefronts).
+// The local size of a tile launch, or nullopt to let the driver choose
+// (GPUs, where the driver knows its wavefronts).
 //
-// On CPU devices the driver's choice is measured to be poor: PoCL 3.1 packs a
-// 64x64 launch into a handful of large work-groups, so one core idles while
-// the other finishes the last group (the Mandelbulb bench frame: 175 ms with
-// 256-pixel tiles, 141 ms with small groups). Each work-group is one task
-// for a CPU thread, so small groups balance the load; a packet work-item is
-// already 16 pixels, so one per group costs nothing measurable, and a
-// per-pixel work-item gets a few rows of neighbours (the largest of 8/4/2/1
-// dividing the launch, as OpenCL 1.2 requires).
-std::optional<std::array<std::size_t, 2>> launch_local_size(DeviceType type, int simd_width,
-                                                            std::size_t groups_x,
-                                                            std::size_t groups_y);
+// On CPU devices the driver's choice is measured to be poor for tiles:
+// PoCL 3.1 packs a 64x64 launch into a few large work-groups, so one core
+// idles while the other finishes the last group (the Mandelbulb bench frame:
+// 175 ms with its choice, 135 ms with one work-item per group). Each
+// work-group is one task for a CPU thread, so small groups balance the load;
+// a packet work-item is already 16 pixels, and per-pixel kernels measured
+// the same with 1x1, 8x8 and 16x1. One fixed size also means PoCL compiles
+// its work-group function once, not once per edge-tile shape, and 1x1
+// divides every launch.
+std::optional<std::array<std::size_t, 2>> launch_local_size(DeviceType type);
 
 }  // namespace sdfrt

@@ -153,7 +153,7 @@ FloatImage Renderer::render(const std::vector<float>& frame, int width, int heig
 
     const std::size_t global[2] = {static_cast<std::size_t>(groups_x),
                                    static_cast<std::size_t>(groups_y)};
-    const auto local = launch_local_size(device_->info().type, spec_.simd_width, global[0], global[1]);
+    const auto local = launch_local_size(device_->info().type);
     cl_event raw_event = nullptr;
     check_cl(clEnqueueNDRangeKernel(device_->queue(), kernel.get(), 2, nullptr, global,
                                     local ? local->data() : nullptr, 0,
