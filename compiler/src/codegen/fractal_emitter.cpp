@@ -188,93 +188,69 @@ std::string hybrid_trap(const ir::Node& n, const std::string& p, const Literals&
 }  // namespace
 
 std::string emit_fractal_trap(const ir::Node& n, const std::string& p, const Literals& lit, CodeWriter& w,
-                              std::set<std::string>& used, bool iteration) {
+                              std::set<std::string>& used, OrbitValue value) {
   const auto& q = n.params;
   auto r = [&](size_t i) { return param(n, i, lit); };
-  if (n.kind == Kind::Hybrid) return hybrid_trap(n, p, lit, w, used, iteration);
-  std::string call;
+  if (value == OrbitValue::Escape) {  // folding fractals never escape, and a hybrid reports its budget
+    if (n.kind == Kind::Menger || n.kind == Kind::Sierpinski || n.kind == Kind::Hybrid) return lit.typed(q[0]);
+    if (n.kind == Kind::Kifs) return lit.typed(q[5]);
+  }
+  if (n.kind == Kind::Hybrid) return hybrid_trap(n, p, lit, w, used, value == OrbitValue::Smooth);
+  std::string fn, args;
   switch (n.kind) {
     case Kind::Mandelbulb:
-      if (integer_power(q[0]) && !n.animation(0)) {  // trig-free, like the distance
-        call = fmt::format("trap_mandelbulb_int({}, {}, {}, {}, 0, v3_splat(0.0f)", p, int(q[0]), int(q[1]), r(2));
-        used.insert("trap_mandelbulb_int");
+    case Kind::Juliabulb: {
+      const bool julia = n.kind == Kind::Juliabulb;
+      const std::string c = julia ? lit.vec3({q[3], q[4], q[5]}) : "v3_splat(0.0f)";
+      // Trig-free like the distance; the iterations AOV keeps the trig orbit,
+      // whose rounding (and so escape step) it has always had.
+      if (integer_power(q[0]) && !n.animation(0) && value != OrbitValue::Escape) {
+        fn = "trap_mandelbulb_int";
+        args = fmt::format("{}, {}, {}, {}, {}, {}", p, int(q[0]), int(q[1]), r(2), int(julia), c);
       } else {
-        call = fmt::format("trap_mandelbulb({}, {}, {}, {}, 0, v3_splat(0.0f)", p, r(0), int(q[1]), r(2));
-        used.insert("trap_mandelbulb");
+        fn = "trap_mandelbulb";
+        args = fmt::format("{}, {}, {}, {}, {}, {}", p, r(0), int(q[1]), r(2), int(julia), c);
       }
       break;
-    case Kind::Juliabulb:
-      if (integer_power(q[0]) && !n.animation(0)) {
-        call = fmt::format("trap_mandelbulb_int({}, {}, {}, {}, 1, {}", p, int(q[0]), int(q[1]), r(2),
-                           lit.vec3({q[3], q[4], q[5]}));
-        used.insert("trap_mandelbulb_int");
-      } else {
-        call = fmt::format("trap_mandelbulb({}, {}, {}, {}, 1, {}", p, r(0), int(q[1]), r(2), lit.vec3({q[3], q[4], q[5]}));
-        used.insert("trap_mandelbulb");
-      }
-      break;
+    }
     case Kind::Mandelbox:
-      call = fmt::format("trap_mandelbox({}, {}, {}, {}, {}, {}, {}, {}, {}", p, r(0), lit.real(q[1] * q[1]),
-                         lit.real(q[2] * q[2]), r(3), int(q[4]), int(q[5]), lit.vec3({q[6], q[7], q[8]}),
-                         lit.vec3({q[9], q[10], q[11]}));
-      used.insert("trap_mandelbox");
+      fn = "trap_mandelbox";
+      args = fmt::format("{}, {}, {}, {}, {}, {}, {}, {}, {}", p, r(0), lit.real(q[1] * q[1]), lit.real(q[2] * q[2]),
+                         r(3), int(q[4]), int(q[5]), lit.vec3({q[6], q[7], q[8]}), lit.vec3({q[9], q[10], q[11]}));
       break;
     case Kind::QuaternionJulia:
-      call = fmt::format("trap_quaternion_julia({}, {}, {}, {}, {}, {}, {}", p, r(6), r(0), lit.vec3({q[1], q[2], q[3]}),
-                         int(q[4]), int(q[5]), r(7));
-      used.insert("trap_quaternion_julia");
+      fn = "trap_quaternion_julia";
+      args = fmt::format("{}, {}, {}, {}, {}, {}, {}", p, r(6), r(0), lit.vec3({q[1], q[2], q[3]}), int(q[4]),
+                         int(q[5]), r(7));
       break;
     case Kind::Menger:
-      call = fmt::format("trap_menger({}, {}, {}", p, int(q[0]), r(1));
-      used.insert("trap_menger");
+      fn = "trap_menger";
+      args = fmt::format("{}, {}, {}", p, int(q[0]), r(1));
       break;
     case Kind::Sierpinski:
-      call = fmt::format("trap_sierpinski({}, {}, {}", p, int(q[0]), r(1));
-      used.insert("trap_sierpinski");
+      fn = "trap_sierpinski";
+      args = fmt::format("{}, {}, {}", p, int(q[0]), r(1));
       break;
     case Kind::Kifs: {
       auto row = [&](size_t i) { return lit.vec3({q[i], q[i + 1], q[i + 2]}); };
-      call = fmt::format("trap_kifs({}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}", p, int(q[0]), r(1),
-                         lit.vec3({q[2], q[3], q[4]}), int(q[5]), row(6), row(9), row(12), row(15), row(18), row(21));
-      used.insert("trap_kifs");
+      fn = "trap_kifs";
+      args = fmt::format("{}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}", p, int(q[0]), r(1), lit.vec3({q[2], q[3], q[4]}),
+                         int(q[5]), row(6), row(9), row(12), row(15), row(18), row(21));
       break;
     }
     default: return "";
   }
-  // Both values come from one orbit; the material's source picks one.
+  used.insert(fn);
+  // One orbit gives every value; the caller picks one. Only escape-time
+  // orbits have an escape iteration (the others returned theirs above).
+  const bool escapes = n.kind == Kind::Mandelbulb || n.kind == Kind::Juliabulb || n.kind == Kind::Mandelbox ||
+                       n.kind == Kind::QuaternionJulia;
   std::string t = fmt::format("otrap{}", w.fresh()), it = fmt::format("oiter{}", w.fresh());
+  std::string count = escapes ? fmt::format("ocount{}", w.fresh()) : "";
   w.line(fmt::format("real {};", it));
-  w.line(fmt::format("real {} = {}, &{});", t, call, it));
-  return iteration ? it : t;
-}
-
-std::string emit_fractal_iterations(const ir::Node& n, const std::string& p, const Literals& lit,
-                                    std::set<std::string>& used) {
-  const auto& q = n.params;
-  auto r = [&](size_t i) { return param(n, i, lit); };
-  auto call = [&](const char* fn) {
-    used.insert(fn);
-    return std::string(fn);
-  };
-  switch (n.kind) {
-    case Kind::Mandelbulb:
-      return fmt::format("{}({}, {}, {}, {}, 0, v3_splat(0.0f))", call("iter_mandelbulb"), p, r(0), int(q[1]), r(2));
-    case Kind::Juliabulb:
-      return fmt::format("{}({}, {}, {}, {}, 1, {})", call("iter_mandelbulb"), p, r(0), int(q[1]), r(2),
-                         lit.vec3({q[3], q[4], q[5]}));
-    case Kind::Mandelbox:
-      return fmt::format("{}({}, {}, {}, {}, {}, {}, {}, {}, {})", call("iter_mandelbox"), p, r(0), lit.real(q[1] * q[1]),
-                         lit.real(q[2] * q[2]), r(3), int(q[4]), int(q[5]), lit.vec3({q[6], q[7], q[8]}),
-                         lit.vec3({q[9], q[10], q[11]}));
-    case Kind::QuaternionJulia:
-      return fmt::format("{}({}, {}, {}, {}, {}, {}, {})", call("iter_quaternion_julia"), p, r(6), r(0),
-                         lit.vec3({q[1], q[2], q[3]}), int(q[4]), int(q[5]), r(7));
-    case Kind::Menger:
-    case Kind::Sierpinski:
-    case Kind::Hybrid: return lit.typed(q[0]);
-    case Kind::Kifs: return lit.typed(q[5]);
-    default: return "";
-  }
+  if (escapes) w.line(fmt::format("real {};", count));
+  w.line(fmt::format("real {} = {}({}, &{}{});", t, fn, args, it, escapes ? ", &" + count : ""));
+  return value == OrbitValue::Escape ? count : value == OrbitValue::Smooth ? it : t;
 }
 
 }  // namespace sdfc::codegen::detail
