@@ -15,43 +15,65 @@ using ir::Kind;
 // A power the trig-free path can take: a whole number from 2 up.
 bool integer_power(double power) { return power >= 2 && power == std::floor(power); }
 
-std::string hybrid(const ir::Node& n, const std::string& p, const Literals& lit, CodeWriter& w,
-                   std::set<std::string>& used) {
+// A hybrid's orbit: its iteration budget, the length of its step pattern and
+// its escape radius.
+struct HybridOrbit {
+  int iterations, steps, period = 0;
+  std::string escape;
+};
+
+HybridOrbit hybrid_orbit(const ir::Node& n, const Literals& lit) {
   const auto& q = n.params;
-  int iterations = int(q[0]), steps = int(q[2]);
-  std::string d = fmt::format("hyb{}", w.fresh());
-  int period = 0;
-  for (int s = 0; s < steps; ++s) period += int(q[3 + s * ir::kHybridStepParams + 1]);
-  const std::string escape = lit.real(ir::hybrid_escape_radius(q[1]));
-  w.line(fmt::format("real {};  // hybrid orbit: {} iterations, the step pattern repeats every {}", d, iterations, period));
-  w.open("{");
-  w.line(fmt::format("vec3 z = {};", p));
-  w.line("real dr = 1.0f;");
-  w.line("real r = v3_length(z);");
-  w.line(fmt::format("mask alive = r < {};  // the escape radius, not the bailout: see ir::hybrid_escape_radius", escape));
-  w.open(fmt::format("for (int i = 0; i < {} && M_ANY(alive); ++i) {{", iterations));
-  w.line(fmt::format("const int k = i % {};  // the same step for every lane", period));
-  w.line("real dr_next = dr;");
-  w.line("vec3 z_next;");
-  int upto = 0;
+  HybridOrbit h{int(q[0]), int(q[2]), 0, lit.real(ir::hybrid_escape_radius(q[1]))};
+  for (int s = 0; s < h.steps; ++s) h.period += int(q[3 + s * ir::kHybridStepParams + 1]);
+  return h;
+}
+
+// The step pattern inside a hybrid's orbit loop: one branch per step on k
+// (the position in the pattern), setting z_next from z and scaling `dr`.
+// With `growth`, each branch also records the step's growth g and law (1: a
+// power, 0: linear) for the smooth iteration count.
+void hybrid_steps(const ir::Node& n, const std::string& p, const Literals& lit, CodeWriter& w,
+                  std::set<std::string>& used, const std::string& dr, bool growth) {
+  const auto& q = n.params;
+  int steps = int(q[2]), upto = 0;
   for (int s = 0; s < steps; ++s) {
     const double* st = &q[3 + s * ir::kHybridStepParams];
     upto += int(st[1]);
     std::string cond = s + 1 == steps ? "else" : fmt::format("{}if (k < {})", s ? "else " : "", upto);
-    if (st[0] == double(ir::HybridStep::Mandelbulb)) {
-      used.insert("hybrid_bulb_step");
-      w.line(fmt::format("{} z_next = hybrid_bulb_step(z, {}, {}, &dr_next);  // mandelbulb power {}", cond,
-                         lit.real(st[2]), p, st[2]));
-    } else {
-      used.insert("hybrid_box_step");
-      w.line(fmt::format("{} z_next = hybrid_box_step(z, {}, {}, {}, {}, {}, &dr_next);  // mandelbox scale {}", cond,
-                         lit.real(st[2]), lit.real(st[3] * st[3]), lit.real(st[4] * st[4]), lit.real(st[5]), p, st[2]));
-    }
+    const bool bulb = st[0] == double(ir::HybridStep::Mandelbulb);
+    used.insert(bulb ? "hybrid_bulb_step" : "hybrid_box_step");
+    std::string call = bulb ? fmt::format("hybrid_bulb_step(z, {}, {}, &{})", lit.real(st[2]), p, dr)
+                            : fmt::format("hybrid_box_step(z, {}, {}, {}, {}, {}, &{})", lit.real(st[2]),
+                                          lit.real(st[3] * st[3]), lit.real(st[4] * st[4]), lit.real(st[5]), p, dr);
+    if (growth)
+      w.line(fmt::format("{} {{ z_next = {}; g = {}; law = {}; }}", cond, call, lit.real(bulb ? st[2] : std::fabs(st[2])),
+                         bulb ? "1.0f" : "0.0f"));
+    else
+      w.line(fmt::format("{} z_next = {};  // {} {}", cond, call, bulb ? "mandelbulb power" : "mandelbox scale", st[2]));
   }
+}
+
+std::string hybrid(const ir::Node& n, const std::string& p, const Literals& lit, CodeWriter& w,
+                   std::set<std::string>& used) {
+  const auto& q = n.params;
+  const HybridOrbit h = hybrid_orbit(n, lit);
+  std::string d = fmt::format("hyb{}", w.fresh());
+  w.line(fmt::format("real {};  // hybrid orbit: {} iterations, the step pattern repeats every {}", d, h.iterations, h.period));
+  w.open("{");
+  w.line(fmt::format("vec3 z = {};", p));
+  w.line("real dr = 1.0f;");
+  w.line("real r = v3_length(z);");
+  w.line(fmt::format("mask alive = r < {};  // the escape radius, not the bailout: see ir::hybrid_escape_radius", h.escape));
+  w.open(fmt::format("for (int i = 0; i < {} && M_ANY(alive); ++i) {{", h.iterations));
+  w.line(fmt::format("const int k = i % {};  // the same step for every lane", h.period));
+  w.line("real dr_next = dr;");
+  w.line("vec3 z_next;");
+  hybrid_steps(n, p, lit, w, used, "dr_next", false);
   w.line("z = v3_select(z, z_next, alive);");
   w.line("dr = SEL(dr, dr_next, alive);");
   w.line("r = v3_length(z);");
-  w.line(fmt::format("alive = alive & (r < {});", escape));
+  w.line(fmt::format("alive = alive & (r < {});", h.escape));
   w.close("}");
   w.line(fmt::format("{} = r / fabs(dr);  // the linear estimator: below the log one at the escape radius", d));
   w.line("// far field: the set lies inside the bailout ball, so beyond twice its radius the distance to");
@@ -134,10 +156,8 @@ namespace {
 // the step that escaped (a power for a Mandelbulb step, linear for a box).
 std::string hybrid_trap(const ir::Node& n, const std::string& p, const Literals& lit, CodeWriter& w,
                         std::set<std::string>& used, bool iteration) {
-  const auto& q = n.params;
-  int iterations = int(q[0]), steps = int(q[2]), period = 0;
-  for (int s = 0; s < steps; ++s) period += int(q[3 + s * ir::kHybridStepParams + 1]);
-  const std::string escape = lit.real(ir::hybrid_escape_radius(q[1]));
+  const HybridOrbit h = hybrid_orbit(n, lit);
+  const std::string& escape = h.escape;
   std::string out = fmt::format("htrap{}", w.fresh());
   w.line(fmt::format("real {};  // hybrid orbit {}", out, iteration ? "smooth iteration count" : "trap"));
   w.open("{");
@@ -145,26 +165,11 @@ std::string hybrid_trap(const ir::Node& n, const std::string& p, const Literals&
   w.line("real dr = 1.0f, trap = 1e10f, n = 0.0f, growth = 2.0f, power_law = 0.0f;");
   w.line("real r = v3_length(z);");
   w.line(fmt::format("mask alive = r < {};", escape));
-  w.open(fmt::format("for (int i = 0; i < {} && M_ANY(alive); ++i) {{", iterations));
-  w.line(fmt::format("const int k = i % {};", period));
+  w.open(fmt::format("for (int i = 0; i < {} && M_ANY(alive); ++i) {{", h.iterations));
+  w.line(fmt::format("const int k = i % {};", h.period));
   w.line("vec3 z_next;");
   w.line("real g, law;");
-  int upto = 0;
-  for (int s = 0; s < steps; ++s) {
-    const double* st = &q[3 + s * ir::kHybridStepParams];
-    upto += int(st[1]);
-    std::string cond = s + 1 == steps ? "else" : fmt::format("{}if (k < {})", s ? "else " : "", upto);
-    if (st[0] == double(ir::HybridStep::Mandelbulb)) {
-      used.insert("hybrid_bulb_step");
-      w.line(fmt::format("{} {{ z_next = hybrid_bulb_step(z, {}, {}, &dr); g = {}; law = 1.0f; }}", cond, lit.real(st[2]), p,
-                         lit.real(st[2])));
-    } else {
-      used.insert("hybrid_box_step");
-      w.line(fmt::format("{} {{ z_next = hybrid_box_step(z, {}, {}, {}, {}, {}, &dr); g = {}; law = 0.0f; }}", cond,
-                         lit.real(st[2]), lit.real(st[3] * st[3]), lit.real(st[4] * st[4]), lit.real(st[5]), p,
-                         lit.real(std::fabs(st[2]))));
-    }
-  }
+  hybrid_steps(n, p, lit, w, used, "dr", true);
   w.line("z = v3_select(z, z_next, alive);");
   w.line("n = SEL(n, n + 1.0f, alive);");
   w.line("growth = SEL(growth, (real)(g), alive);");
@@ -177,7 +182,7 @@ std::string hybrid_trap(const ir::Node& n, const std::string& p, const Literals&
     w.line(fmt::format("real rr = fmax(r, {0}), lR = log({0});", escape));
     w.line("real frac = SEL(log(rr / " + escape + "), log(log(rr) / lR), power_law > 0.5f);");
     w.line("frac = clamp(frac / log(fmax(growth, K(1.0001f))), K(0.0f), K(1.0f));");
-    w.line(fmt::format("{} = SEL((real)(1.0f), (n - frac) / {}, r >= {});", out, lit.real(double(iterations)), escape));
+    w.line(fmt::format("{} = SEL((real)(1.0f), (n - frac) / {}, r >= {});", out, lit.real(double(h.iterations)), escape));
   } else {
     w.line(fmt::format("{} = trap;", out));
   }
