@@ -64,6 +64,13 @@ class Probe {
   std::optional<sdfrt::Kernel> kernel_;
 };
 
+// Builds `source` and runs its kernel `name(px, py, pz, out)` (three float
+// coordinate arrays in, one float per point out, one work-item per
+// `simd_width` points) once over all the points; returns out per point.
+// For a test's own probe kernel appended to an emitted scene kernel.
+std::vector<float> run_point_kernel(const std::string& source, const std::string& name, const std::vector<V3>& points,
+                                    int simd_width);
+
 // The point as the probe sees it: each coordinate rounded to float.
 V3 to_float_point(const V3& p);
 double round_to_float(double x);
@@ -125,6 +132,27 @@ std::vector<V3> surface_points(F&& f, const V3& lo, const V3& hi, size_t n, std:
     out.push_back(mul(add(a, b), 0.5));
   }
   return out;
+}
+
+// A ray from a random point at distance `from` of `centre` towards a random
+// point at distance `to` of it (|rd| = 1).
+struct Ray {
+  V3 o, rd;
+};
+Ray random_ray(std::mt19937_64& rng, const V3& centre, double from, double to);
+
+// Sphere tracing of the ray o + t rd against the distance bound `f` from
+// t = 0: the first t where f < eps, or nullopt once t reaches t_max or after
+// max_steps steps.
+template <typename F>
+std::optional<double> trace_to_surface(F&& f, const V3& o, const V3& rd, double eps, double t_max, int max_steps = 3000) {
+  double t = 0;
+  for (int i = 0; i < max_steps && t < t_max; ++i) {
+    double d = f(add(o, mul(rd, t)));
+    if (d < eps) return t;
+    t += d;
+  }
+  return std::nullopt;
 }
 
 // ---- files ----------------------------------------------------------------
