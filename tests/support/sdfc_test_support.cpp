@@ -6,9 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <numbers>
-#include <sstream>
 #include <stdexcept>
 
 #include "sdfc/compile.hpp"
@@ -36,14 +34,6 @@ ir::Module compile_text(const std::string& yaml, const std::string& name, const 
   SourceValue doc = load_yaml_text(yaml, name);
   apply_overrides(doc, overrides);
   return build_module(doc, name);
-}
-
-std::string read_text_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read " + path.string());
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 // ---- probe ----------------------------------------------------------------
@@ -219,26 +209,6 @@ Ray random_ray(std::mt19937_64& rng, const V3& centre, double from, double to) {
   V3 o = add(centre, mul(random_unit(rng), from));
   V3 aim = add(centre, mul(random_unit(rng), to));
   return {o, normalize(sub(aim, o))};
-}
-
-// ---- files ----------------------------------------------------------------
-
-TempDir::TempDir() {
-  std::string pattern = (std::filesystem::temp_directory_path() / "sdfc-test-XXXXXX").string();
-  if (!::mkdtemp(pattern.data())) throw std::runtime_error("mkdtemp failed");
-  path_ = pattern;
-}
-
-TempDir::~TempDir() {
-  std::error_code ec;
-  std::filesystem::remove_all(path_, ec);
-}
-
-std::vector<std::string> TempDir::file_names() const {
-  std::vector<std::string> names;
-  for (const auto& e : std::filesystem::directory_iterator(path_)) names.push_back(e.path().filename().string());
-  std::sort(names.begin(), names.end());
-  return names;
 }
 
 }  // namespace sdfc::test

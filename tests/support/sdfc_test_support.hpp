@@ -1,7 +1,8 @@
 #pragma once
 // Helpers shared by the conformance and end-to-end suites: one OpenCL device
 // per test process, scenes compiled from YAML text, the generated
-// `sdfc_probe` kernel run on real points, small vector maths and temp dirs.
+// `sdfc_probe` kernel run on real points, small vector maths (and, from
+// test_files.hpp, temp dirs and file reads).
 #include <sdfrt/device.hpp>
 #include <sdfrt/program.hpp>
 
@@ -15,6 +16,7 @@
 #include "sdfc/codegen/emit_opencl.hpp"
 #include "sdfc/ir/module.hpp"
 #include "sdfc/reference/evaluator.hpp"
+#include "test_files.hpp"
 
 namespace sdfc::test {
 
@@ -30,9 +32,6 @@ sdfrt::Device& device();
 // YAML text -> optimised module (load_yaml_text + overrides + build_module).
 ir::Module compile_text(const std::string& yaml, const std::string& name = "test.yaml",
                         const std::vector<std::string>& overrides = {});
-
-// Reads a whole file into a string; throws std::runtime_error when it cannot.
-std::string read_text_file(const std::filesystem::path& path);
 
 // ---- the probe kernel -----------------------------------------------------
 
@@ -154,21 +153,5 @@ std::optional<double> trace_to_surface(F&& f, const V3& o, const V3& rd, double 
   }
   return std::nullopt;
 }
-
-// ---- files ----------------------------------------------------------------
-
-// A fresh directory under the temp dir, removed with its contents.
-class TempDir {
- public:
-  TempDir();
-  ~TempDir();
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-  const std::filesystem::path& path() const { return path_; }
-  std::vector<std::string> file_names() const;  // sorted
-
- private:
-  std::filesystem::path path_;
-};
 
 }  // namespace sdfc::test
