@@ -137,7 +137,7 @@ inline real trap_quaternion_julia(vec3 p, real slice, real ca, vec3 cv, int degr
 }
 
 //! fn trap_menger
-//! deps: vec3_ops
+//! deps: vec3_ops, menger_step
 //! class: helper
 // Orbit trap of the Menger sponge: the smallest |coordinate| of the folded,
 // scaled point over the iterations (the same steps as de_menger). A fold
@@ -148,15 +148,7 @@ inline real trap_menger(vec3 p, int iterations, real scale, real* iter)
     real trap = 1e10f;
     real shift = scale - 1.0f;
     for (int i = 0; i < iterations; ++i) {
-        z = v3_abs(z);
-        real hi = fmax(z.x, z.y), lo = fmin(z.x, z.y);
-        z.x = hi; z.y = lo;
-        hi = fmax(z.x, z.z); lo = fmin(z.x, z.z);
-        z.x = hi; z.z = lo;
-        hi = fmax(z.y, z.z); lo = fmin(z.y, z.z);
-        z.y = hi; z.z = lo;
-        z = v3_sub(v3_scale(z, scale), v3_splat(shift));
-        z.z = SEL(z.z, z.z + shift, z.z < -0.5f * shift);
+        z = menger_step(z, scale, shift);
         trap = fmin(trap, fmin(fabs(z.x), fmin(fabs(z.y), fabs(z.z))));
     }
     *iter = (real)(1.0f);
