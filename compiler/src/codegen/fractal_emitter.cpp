@@ -84,6 +84,28 @@ std::string hybrid(const ir::Node& n, const std::string& p, const Literals& lit,
   return d;
 }
 
+// The arguments after p that a fractal's estimator and its orbit-trap
+// function both take ("" for the Mandelbulb forms and the hybrid, whose
+// calls differ). The quaternion Julia's estimator adds its set radius.
+std::string orbit_args(const ir::Node& n, const Literals& lit) {
+  const auto& q = n.params;
+  auto r = [&](size_t i) { return param(n, i, lit); };
+  auto row = [&](size_t i) { return lit.vec3({q[i], q[i + 1], q[i + 2]}); };
+  switch (n.kind) {
+    case Kind::Mandelbox:
+      return fmt::format("{}, {}, {}, {}, {}, {}, {}, {}", r(0), lit.real(q[1] * q[1]), lit.real(q[2] * q[2]), r(3),
+                         int(q[4]), int(q[5]), row(6), row(9));
+    case Kind::QuaternionJulia:
+      return fmt::format("{}, {}, {}, {}, {}, {}", r(6), r(0), row(1), int(q[4]), int(q[5]), r(7));
+    case Kind::Menger:
+    case Kind::Sierpinski: return fmt::format("{}, {}", int(q[0]), r(1));
+    case Kind::Kifs:
+      return fmt::format("{}, {}, {}, {}, {}, {}, {}, {}, {}, {}", int(q[0]), r(1), row(2), int(q[5]), row(6), row(9),
+                         row(12), row(15), row(18), row(21));
+    default: return "";
+  }
+}
+
 }  // namespace
 
 bool is_fractal(const ir::Node& n) { return ir::info(n.kind).category == ir::Category::Fractal; }
@@ -125,24 +147,17 @@ std::string emit_fractal(const ir::Node& n, const std::string& p, const Literals
       return fmt::format("{}({}, {}, {}, {}, {}, {})", call("de_juliabulb"), p, r(0), int(q[1]), r(2), radius, c);
     }
     case Kind::Mandelbox:
-      return fmt::format("{}({}, {}, {}, {}, {}, {}, {}, {}, {})",
-                         call(ir::DeMethod(int(q[12])) == ir::DeMethod::Jacobian ? "de_mandelbox_jacobian" : "de_mandelbox"), p, r(0),
-                         lit.real(q[1] * q[1]), lit.real(q[2] * q[2]), r(3), int(q[4]), int(q[5]),
-                         lit.vec3({q[6], q[7], q[8]}), lit.vec3({q[9], q[10], q[11]}));
+      return fmt::format("{}({}, {})",
+                         call(ir::DeMethod(int(q[12])) == ir::DeMethod::Jacobian ? "de_mandelbox_jacobian" : "de_mandelbox"), p,
+                         orbit_args(n, lit));
     case Kind::QuaternionJulia: {
       double cn = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-      return fmt::format("{}({}, {}, {}, {}, {}, {}, {}, {})", call("de_quaternion_julia"), p, r(6), r(0),
-                         lit.vec3({q[1], q[2], q[3]}), int(q[4]), int(q[5]), r(7),
+      return fmt::format("{}({}, {}, {})", call("de_quaternion_julia"), p, orbit_args(n, lit),
                          lit.real(ir::julia_set_radius(q[4], cn)));
     }
-    case Kind::Menger: return fmt::format("{}({}, {}, {})", call("de_menger"), p, int(q[0]), r(1));
-    case Kind::Sierpinski: return fmt::format("{}({}, {}, {})", call("de_sierpinski"), p, int(q[0]), r(1));
-    case Kind::Kifs: {
-      auto row = [&](size_t i) { return lit.vec3({q[i], q[i + 1], q[i + 2]}); };
-      return fmt::format("{}({}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {})", call("de_kifs"), p,
-                         int(q[0]), r(1), lit.vec3({q[2], q[3], q[4]}), int(q[5]), row(6), row(9), row(12), row(15),
-                         row(18), row(21));
-    }
+    case Kind::Menger: return fmt::format("{}({}, {})", call("de_menger"), p, orbit_args(n, lit));
+    case Kind::Sierpinski: return fmt::format("{}({}, {})", call("de_sierpinski"), p, orbit_args(n, lit));
+    case Kind::Kifs: return fmt::format("{}({}, {})", call("de_kifs"), p, orbit_args(n, lit));
     case Kind::Hybrid: return hybrid(n, p, lit, w, used);
     default: return "";
   }
@@ -218,33 +233,14 @@ std::string emit_fractal_trap(const ir::Node& n, const std::string& p, const Lit
       }
       break;
     }
-    case Kind::Mandelbox:
-      fn = "trap_mandelbox";
-      args = fmt::format("{}, {}, {}, {}, {}, {}, {}, {}, {}", p, r(0), lit.real(q[1] * q[1]), lit.real(q[2] * q[2]),
-                         r(3), int(q[4]), int(q[5]), lit.vec3({q[6], q[7], q[8]}), lit.vec3({q[9], q[10], q[11]}));
-      break;
-    case Kind::QuaternionJulia:
-      fn = "trap_quaternion_julia";
-      args = fmt::format("{}, {}, {}, {}, {}, {}, {}", p, r(6), r(0), lit.vec3({q[1], q[2], q[3]}), int(q[4]),
-                         int(q[5]), r(7));
-      break;
-    case Kind::Menger:
-      fn = "trap_menger";
-      args = fmt::format("{}, {}, {}", p, int(q[0]), r(1));
-      break;
-    case Kind::Sierpinski:
-      fn = "trap_sierpinski";
-      args = fmt::format("{}, {}, {}", p, int(q[0]), r(1));
-      break;
-    case Kind::Kifs: {
-      auto row = [&](size_t i) { return lit.vec3({q[i], q[i + 1], q[i + 2]}); };
-      fn = "trap_kifs";
-      args = fmt::format("{}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}", p, int(q[0]), r(1), lit.vec3({q[2], q[3], q[4]}),
-                         int(q[5]), row(6), row(9), row(12), row(15), row(18), row(21));
-      break;
-    }
+    case Kind::Mandelbox: fn = "trap_mandelbox"; break;
+    case Kind::QuaternionJulia: fn = "trap_quaternion_julia"; break;
+    case Kind::Menger: fn = "trap_menger"; break;
+    case Kind::Sierpinski: fn = "trap_sierpinski"; break;
+    case Kind::Kifs: fn = "trap_kifs"; break;
     default: return "";
   }
+  if (args.empty()) args = fmt::format("{}, {}", p, orbit_args(n, lit));
   used.insert(fn);
   // One orbit gives every value; the caller picks one. Only escape-time
   // orbits have an escape iteration (the others returned theirs above).
