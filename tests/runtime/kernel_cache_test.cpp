@@ -12,6 +12,7 @@ namespace sdfrt {
 namespace {
 
 using test::ScopedEnv;
+using test::same_bits;
 using test::TempDir;
 
 FloatImage render_small(Renderer& renderer) {
@@ -19,11 +20,6 @@ FloatImage render_small(Renderer& renderer) {
   options.tile_width = 16;
   options.tile_height = 16;
   return renderer.render({0.25f}, 40, 20, options);
-}
-
-bool same_bits(const FloatImage& a, const FloatImage& b) {
-  return a.data.size() == b.data.size() &&
-         std::memcmp(a.data.data(), b.data.data(), a.data.size() * sizeof(float)) == 0;
 }
 
 TEST(KernelCache, SecondBuildIsAHitWithIdenticalOutput) {

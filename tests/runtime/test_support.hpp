@@ -28,6 +28,9 @@ class ScopedEnv {
   std::optional<std::string> old_;
 };
 
+// True when both images hold exactly the same floats (bit for bit).
+bool same_bits(const FloatImage& a, const FloatImage& b);
+
 // The default device, opened once per test process.
 Device& test_device();
 
