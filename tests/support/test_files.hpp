@@ -1,5 +1,5 @@
 #pragma once
-// File helpers shared by every test suite (the runtime's too, so no
+// File utilities shared by every test suite (the runtime's too, so no
 // dependency on the compiler or the runtime): temp dirs and whole-file reads.
 #include <filesystem>
 #include <string>
