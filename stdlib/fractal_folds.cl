@@ -47,8 +47,39 @@ inline real de_mandelbox(vec3 p, real scale, real min_r2, real fixed_r2, real fo
     return v3_length(z) / fabs(dr);
 }
 
+//! fn cube_fold
+//! deps: vec3_ops
+//! class: helper
+// The symmetry folds of the cube: into the wedge x >= y >= z >= 0 (the
+// absolute value, then a sort of the coordinates).
+inline vec3 cube_fold(vec3 z)
+{
+    z = v3_abs(z);
+    real hi = fmax(z.x, z.y), lo = fmin(z.x, z.y);
+    z.x = hi; z.y = lo;
+    hi = fmax(z.x, z.z); lo = fmin(z.x, z.z);
+    z.x = hi; z.z = lo;
+    hi = fmax(z.y, z.z); lo = fmin(z.y, z.z);
+    z.y = hi; z.z = lo;
+    return z;
+}
+
+//! fn menger_step
+//! deps: vec3_ops, cube_fold
+//! class: helper
+// One Menger iteration: fold into the wedge, scale about the corner
+// (1, 1, 1) (shift = scale - 1), fold the middle layer back. Shared by
+// de_menger and trap_menger.
+inline vec3 menger_step(vec3 z, real scale, real shift)
+{
+    z = cube_fold(z);
+    z = v3_sub(v3_scale(z, scale), v3_splat(shift));
+    z.z = SEL(z.z, z.z + shift, z.z < -0.5f * shift);
+    return z;
+}
+
 //! fn de_menger
-//! deps: vec3_ops, sd_box
+//! deps: vec3_ops, sd_box, menger_step
 //! class: estimate
 // Menger sponge by folding (seed 001 part IV): fold into the wedge
 // x >= y >= z >= 0, scale about the corner (1, 1, 1), fold the middle layer
@@ -60,15 +91,7 @@ inline real de_menger(vec3 p, int iterations, real scale)
     real s = 1.0f;
     real shift = scale - 1.0f;
     for (int i = 0; i < iterations; ++i) {
-        z = v3_abs(z);
-        real hi = fmax(z.x, z.y), lo = fmin(z.x, z.y);
-        z.x = hi; z.y = lo;
-        hi = fmax(z.x, z.z); lo = fmin(z.x, z.z);
-        z.x = hi; z.z = lo;
-        hi = fmax(z.y, z.z); lo = fmin(z.y, z.z);
-        z.y = hi; z.z = lo;
-        z = v3_sub(v3_scale(z, scale), v3_splat(shift));
-        z.z = SEL(z.z, z.z + shift, z.z < -0.5f * shift);
+        z = menger_step(z, scale, shift);
         s = s * scale;
     }
     return sd_box(z, v3_splat(1.0f), K(0.0f)) / s;
@@ -133,7 +156,7 @@ inline vec3 plane_fold(vec3 z, vec3 n)
 inline vec3 v3_rows(vec3 a, vec3 r0, vec3 r1, vec3 r2) { return v3(v3_dot(r0, a), v3_dot(r1, a), v3_dot(r2, a)); }
 
 //! fn kifs_step
-//! deps: vec3_ops, tetra_fold, plane_fold, v3_rows
+//! deps: vec3_ops, tetra_fold, plane_fold, cube_fold, v3_rows
 //! class: helper
 // One step of the kaleidoscopic IFS: rotate (rows b0..b2), fold by the
 // symmetry group (n1, n2: the icosahedral mirror normals), scale about
@@ -151,13 +174,7 @@ inline vec3 kifs_step(vec3 z, int symmetry, real scale, vec3 offset, vec3 n1, ve
             z = plane_fold(z, n2);
         }
     } else {
-        z = v3_abs(z);
-        real hi = fmax(z.x, z.y), lo = fmin(z.x, z.y);
-        z.x = hi; z.y = lo;
-        hi = fmax(z.x, z.z); lo = fmin(z.x, z.z);
-        z.x = hi; z.z = lo;
-        hi = fmax(z.y, z.z); lo = fmin(z.y, z.z);
-        z.y = hi; z.z = lo;
+        z = cube_fold(z);
     }
     z = v3_sub(v3_scale(z, scale), v3_scale(offset, scale - 1.0f));
     if (symmetry == 3) {

@@ -24,9 +24,12 @@ inline real orbit_iteration(real n, real r, real R, real g, int power_law, int i
 // smallest distance of the orbit to the origin and the x, y, z coordinate
 // planes before it escapes (seed 000 Listing 7, seed 001 part II); the
 // planes are nearer than the origin, so it is the smallest |coordinate|.
-// *iter gets the smooth iteration count (orbit_iteration). Evaluated once
-// per hit, never in the march, so it uses the trig power for every power.
-inline real trap_mandelbulb(vec3 p, real power, int iterations, real bailout, int julia, vec3 c, real* iter)
+// *iter gets the smooth iteration count (orbit_iteration), *count the
+// escape iteration (steps taken until |z| >= bailout, or `iterations`: the
+// iterations AOV reads it). Evaluated once per hit or pixel, never in the
+// march, so it uses the trig power for every power.
+inline real trap_mandelbulb(vec3 p, real power, int iterations, real bailout, int julia, vec3 c, real* iter,
+                            real* count)
 {
     vec3 add = julia ? c : p;
     vec3 z = p;
@@ -42,6 +45,7 @@ inline real trap_mandelbulb(vec3 p, real power, int iterations, real bailout, in
         alive = alive & (r < bailout);
     }
     *iter = orbit_iteration(n, r, bailout, power, 1, iterations, r >= bailout);
+    *count = n;
     return trap;
 }
 
@@ -51,7 +55,8 @@ inline real trap_mandelbulb(vec3 p, real power, int iterations, real bailout, in
 // trap_mandelbulb for an integer power known at build time: the same orbit
 // by the trig-free power (de Moivre), so the trap costs about one distance
 // evaluation instead of ten rounds of acos, atan2, pow, sin and cos.
-inline __attribute__((always_inline)) real trap_mandelbulb_int(vec3 p, int power, int iterations, real bailout, int julia, vec3 c, real* iter)
+inline __attribute__((always_inline)) real trap_mandelbulb_int(vec3 p, int power, int iterations, real bailout, int julia, vec3 c, real* iter,
+                                                               real* count)
 {
     vec3 add = julia ? c : p;
     vec3 z = p;
@@ -68,6 +73,7 @@ inline __attribute__((always_inline)) real trap_mandelbulb_int(vec3 p, int power
         alive = alive & (r < bailout);
     }
     *iter = orbit_iteration(n, r, bailout, (real)(power), 1, iterations, r >= bailout);
+    *count = n;
     return trap;
 }
 
@@ -76,9 +82,9 @@ inline __attribute__((always_inline)) real trap_mandelbulb_int(vec3 p, int power
 //! class: helper
 // Orbit trap of the Mandelbox: the smallest |coordinate| along the orbit;
 // *iter the smooth iteration count (linear growth by |scale|, escape at
-// |z| = 100 as in the estimator).
+// |z| = 100 as in the estimator), *count the escape iteration.
 inline real trap_mandelbox(vec3 p, real scale, real min_r2, real fixed_r2, real folding_limit, int iterations,
-                           int julia, vec3 c, vec3 axis_scale, real* iter)
+                           int julia, vec3 c, vec3 axis_scale, real* iter, real* count)
 {
     vec3 add = julia ? c : p;
     vec3 z = p;
@@ -94,6 +100,7 @@ inline real trap_mandelbox(vec3 p, real scale, real min_r2, real fixed_r2, real 
     }
     real r = v3_length(z);
     *iter = orbit_iteration(n, r, K(100.0f), fabs(scale), 0, iterations, r >= 100.0f);
+    *count = n;
     return trap;
 }
 
@@ -101,9 +108,10 @@ inline real trap_mandelbox(vec3 p, real scale, real min_r2, real fixed_r2, real 
 //! deps: vec3_ops, orbit_iteration
 //! class: helper
 // Orbit trap of the quaternion Julia set: the smallest |component| of the
-// 3D part (x, y, z) along the orbit; *iter the smooth iteration count.
+// 3D part (x, y, z) along the orbit; *iter the smooth iteration count,
+// *count the escape iteration.
 inline real trap_quaternion_julia(vec3 p, real slice, real ca, vec3 cv, int degree, int iterations, real bailout,
-                                  real* iter)
+                                  real* iter, real* count)
 {
     real a = p.x;
     vec3 v = v3(p.y, p.z, slice);
@@ -124,11 +132,12 @@ inline real trap_quaternion_julia(vec3 p, real slice, real ca, vec3 cv, int degr
     }
     real r = sqrt(r2);
     *iter = orbit_iteration(n, r, bailout, (real)(degree), 1, iterations, r >= bailout);
+    *count = n;
     return trap;
 }
 
 //! fn trap_menger
-//! deps: vec3_ops
+//! deps: vec3_ops, menger_step
 //! class: helper
 // Orbit trap of the Menger sponge: the smallest |coordinate| of the folded,
 // scaled point over the iterations (the same steps as de_menger). A fold
@@ -139,15 +148,7 @@ inline real trap_menger(vec3 p, int iterations, real scale, real* iter)
     real trap = 1e10f;
     real shift = scale - 1.0f;
     for (int i = 0; i < iterations; ++i) {
-        z = v3_abs(z);
-        real hi = fmax(z.x, z.y), lo = fmin(z.x, z.y);
-        z.x = hi; z.y = lo;
-        hi = fmax(z.x, z.z); lo = fmin(z.x, z.z);
-        z.x = hi; z.z = lo;
-        hi = fmax(z.y, z.z); lo = fmin(z.y, z.z);
-        z.y = hi; z.z = lo;
-        z = v3_sub(v3_scale(z, scale), v3_splat(shift));
-        z.z = SEL(z.z, z.z + shift, z.z < -0.5f * shift);
+        z = menger_step(z, scale, shift);
         trap = fmin(trap, fmin(fabs(z.x), fmin(fabs(z.y), fabs(z.z))));
     }
     *iter = (real)(1.0f);

@@ -1,8 +1,6 @@
 // The sdfc executable as a user meets it: exit codes, stdout for data,
 // stderr for messages, --help everywhere.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <array>
 #include <cstdio>
@@ -10,33 +8,15 @@
 #include <fstream>
 #include <sstream>
 
+#include "run_sdfc.hpp"
+
 namespace {
 
-struct Result {
-  int code;
-  std::string out, err;
-};
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using Result = sdfc::test::RunResult;
+using sdfc::test::read_text;
 
 // Runs `sdfc ARGS` from the repository root.
-Result sdfc(const std::string& args) {
-  static int n = 0;
-  std::string dir = ::testing::TempDir();
-  std::string out = dir + "/cli_out_" + std::to_string(getpid()) + "_" + std::to_string(n);
-  std::string err = dir + "/cli_err_" + std::to_string(getpid()) + "_" + std::to_string(n++);
-  std::string cmd = std::string("cd ") + SDFC_SOURCE_DIR + " && " + SDFC_BINARY + " " + args + " >" + out + " 2>" + err;
-  int status = std::system(cmd.c_str());
-  Result r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
-  std::remove(out.c_str());
-  std::remove(err.c_str());
-  return r;
-}
+Result sdfc(const std::string& args) { return sdfc::test::run_sdfc(args); }
 
 std::string write_scene(const std::string& name, const std::string& text) {
   std::string path = ::testing::TempDir() + "/" + name;
@@ -111,7 +91,7 @@ TEST(Cli, CompileWritesAFile) {
   std::string out = ::testing::TempDir() + "/k.cl";
   Result r = sdfc("compile examples/primitives.yaml -o " + out);
   EXPECT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(slurp(out).find("sd_torus"), std::string::npos);
+  EXPECT_NE(read_text(out).find("sd_torus"), std::string::npos);
 }
 
 TEST(Cli, SetOverridesAnyValue) {

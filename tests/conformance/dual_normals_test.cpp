@@ -4,7 +4,6 @@
 // scene with a node that has no dual derivatives is a clear scene error.
 #include <gtest/gtest.h>
 
-#include <CL/cl.h>
 #include <fmt/format.h>
 
 #include <cmath>
@@ -63,28 +62,7 @@ TEST_P(DualNormals, AgreeWithCentralDifferences) {
   auto f = [&](const V3& p) { return reference::distance(m, p); };
   std::vector<V3> pts = test::surface_points(f, {-4, -4, -1.5}, {4, 4, 1.5}, 400, rng);
   ASSERT_GE(pts.size(), 300u);
-  auto program = sdfrt::build_program(test::device(), normal_kernel(m, width), "");
-  auto kernel = program.kernel("normal_probe");
-  size_t n = (pts.size() + width - 1) / width * width;
-  std::vector<float> x(n, 5), y(n, 5), z(n, 5), out(n, 0);
-  for (size_t i = 0; i < pts.size(); ++i) x[i] = float(pts[i][0]), y[i] = float(pts[i][1]), z[i] = float(pts[i][2]);
-  cl_context ctx = test::device().context();
-  cl_int err = CL_SUCCESS;
-  auto buf = [&](cl_mem_flags fl, float* data) {
-    return sdfrt::BufferHandle(clCreateBuffer(ctx, fl | (fl == CL_MEM_READ_ONLY ? CL_MEM_COPY_HOST_PTR : 0), n * sizeof(float),
-                                              fl == CL_MEM_READ_ONLY ? data : nullptr, &err));
-  };
-  auto bx = buf(CL_MEM_READ_ONLY, x.data()), by = buf(CL_MEM_READ_ONLY, y.data()), bz = buf(CL_MEM_READ_ONLY, z.data());
-  auto bo = buf(CL_MEM_WRITE_ONLY, nullptr);
-  ASSERT_EQ(err, CL_SUCCESS);
-  cl_mem args[4] = {bx.get(), by.get(), bz.get(), bo.get()};
-  for (unsigned i = 0; i < 4; ++i) kernel.set_arg(i, args[i]);
-  size_t global = n / width;
-  ASSERT_EQ(clEnqueueNDRangeKernel(test::device().queue(), kernel.get(), 1, nullptr, &global, nullptr, 0, nullptr, nullptr),
-            CL_SUCCESS);
-  ASSERT_EQ(clEnqueueReadBuffer(test::device().queue(), bo.get(), CL_TRUE, 0, n * sizeof(float), out.data(), 0, nullptr,
-                                nullptr),
-            CL_SUCCESS);
+  std::vector<float> out = test::run_point_kernel(normal_kernel(m, width), "normal_probe", pts, width);
   double worst = 0;
   for (size_t i = 0; i < pts.size(); ++i)
     worst = std::max(worst, std::acos(std::clamp(double(out[i]), -1.0, 1.0)) * 180 / std::numbers::pi);
@@ -135,45 +113,16 @@ TEST(DualNormalsFractals, AgreeWithCentralDifferencesAtMostHits) {
   for (size_t c = 0; c < centres.size(); ++c) {
     std::vector<V3> pts;
     for (int attempt = 0; attempt < 600 && pts.size() < 300; ++attempt) {
-      V3 o = test::add(centres[c], test::mul(test::random_unit(rng), 1.4));
-      V3 rd = test::normalize(test::sub(test::add(centres[c], test::mul(test::random_unit(rng), 0.3)), o));
-      double t = 0;
-      for (int i = 0; i < 3000 && t < 3; ++i) {
-        V3 x = test::add(o, test::mul(rd, t));
-        double d = reference::distance(m, x);
-        if (d < 2e-4) {
-          pts.push_back(x);
-          break;
-        }
-        t += d;
-      }
+      auto [o, rd] = test::random_ray(rng, centres[c], 1.4, 0.3);
+      auto f = [&](const V3& x) { return reference::distance(m, x); };
+      if (auto t = test::trace_to_surface(f, o, rd, 2e-4, 3)) pts.push_back(test::add(o, test::mul(rd, *t)));
     }
     ASSERT_GE(pts.size(), 200u) << names[c];
     // In double, a central difference 2000x finer than the hit distance: the
     // estimator's own gradient there, not an average over its detail (at
     // h = 1e-5 the 12-step Mandelbox's detail already bends it by 2 degrees
     // at the median).
-    auto program = sdfrt::build_program(test::device(), normal_kernel(m, width, "1e-7"), "");
-    auto kernel = program.kernel("normal_probe");
-    size_t n = (pts.size() + width - 1) / width * width;
-    std::vector<float> x(n, 5), y(n, 5), z(n, 5), out(n, 0);
-    for (size_t i = 0; i < pts.size(); ++i) x[i] = float(pts[i][0]), y[i] = float(pts[i][1]), z[i] = float(pts[i][2]);
-    cl_context ctx = test::device().context();
-    cl_int err = CL_SUCCESS;
-    auto in = [&](float* data) {
-      return sdfrt::BufferHandle(clCreateBuffer(ctx, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, n * sizeof(float), data, &err));
-    };
-    auto bx = in(x.data()), by = in(y.data()), bz = in(z.data());
-    auto bo = sdfrt::BufferHandle(clCreateBuffer(ctx, CL_MEM_WRITE_ONLY, n * sizeof(float), nullptr, &err));
-    ASSERT_EQ(err, CL_SUCCESS);
-    cl_mem args[4] = {bx.get(), by.get(), bz.get(), bo.get()};
-    for (unsigned i = 0; i < 4; ++i) kernel.set_arg(i, args[i]);
-    size_t global = n / width;
-    ASSERT_EQ(clEnqueueNDRangeKernel(test::device().queue(), kernel.get(), 1, nullptr, &global, nullptr, 0, nullptr, nullptr),
-              CL_SUCCESS);
-    ASSERT_EQ(clEnqueueReadBuffer(test::device().queue(), bo.get(), CL_TRUE, 0, n * sizeof(float), out.data(), 0, nullptr,
-                                  nullptr),
-              CL_SUCCESS);
+    std::vector<float> out = test::run_point_kernel(normal_kernel(m, width, "1e-7"), "normal_probe", pts, width);
     std::vector<double> angle;
     for (size_t i = 0; i < pts.size(); ++i)
       angle.push_back(std::acos(std::clamp(double(out[i]), -1.0, 1.0)) * 180 / std::numbers::pi);

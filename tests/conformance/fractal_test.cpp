@@ -99,22 +99,11 @@ std::vector<V3> member_points(const ir::Module& m, const V3& centre, double radi
   for (int i = 0; i < 800; ++i) pts.push_back(test::uniform_in(rng, lo, hi));
   int rays = 0;
   for (int attempt = 0; attempt < 60 && rays < 8; ++attempt) {
-    V3 o = add(centre, mul(test::random_unit(rng), 1.8 * radius));
-    V3 aim = add(centre, mul(test::random_unit(rng), 0.2 * radius));
-    V3 rd = test::normalize(test::sub(aim, o));
-    double t = 0;
-    bool hit = false;
-    for (int i = 0; i < 3000 && t < 4 * radius; ++i) {
-      double d = reference::distance(m, add(o, mul(rd, t)));
-      if (d < 1e-6) {
-        hit = true;
-        break;
-      }
-      t += d;
-    }
-    if (!hit) continue;
+    auto [o, rd] = test::random_ray(rng, centre, 1.8 * radius, 0.2 * radius);
+    auto t = test::trace_to_surface([&](const V3& x) { return reference::distance(m, x); }, o, rd, 1e-6, 4 * radius);
+    if (!t) continue;
     ++rays;
-    for (int k = -60; k <= 60; ++k) pts.push_back(add(o, mul(rd, t + k * 2e-4 * radius)));
+    for (int k = -60; k <= 60; ++k) pts.push_back(add(o, mul(rd, *t + k * 2e-4 * radius)));
   }
   for (int i = 0; i < 60; ++i) pts.push_back(add(centre, mul(test::random_unit(rng), radius * (1.0 + i * 0.02))));
   return pts;

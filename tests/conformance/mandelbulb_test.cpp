@@ -68,19 +68,10 @@ std::vector<V3> bulb_points(const ir::Module& m, const std::string& seed) {
     V3 o = mul(dir, -2.5);
     V3 aim = mul(test::random_unit(rng), 0.2);
     V3 rd = test::normalize(test::sub(aim, o));
-    double t = 0;
-    bool hit = false;
-    for (int i = 0; i < 2000 && t < 6; ++i) {
-      double d = reference::distance(m, add(o, mul(rd, t)));
-      if (d < 1e-6) {
-        hit = true;
-        break;
-      }
-      t += d;
-    }
-    if (!hit) continue;
+    auto t = test::trace_to_surface([&](const V3& x) { return reference::distance(m, x); }, o, rd, 1e-6, 6, 2000);
+    if (!t) continue;
     ++rays;
-    for (int k = -60; k <= 60; ++k) pts.push_back(add(o, mul(rd, t + k * 5e-4)));
+    for (int k = -60; k <= 60; ++k) pts.push_back(add(o, mul(rd, *t + k * 5e-4)));
   }
   // The far field (beyond 1.5x the set radius the estimator returns the
   // distance to the bounding ball).

@@ -8,7 +8,6 @@
 // itself can differ), so float must match on most points.
 #include <gtest/gtest.h>
 
-#include <CL/cl.h>
 #include <fmt/format.h>
 
 #include <cmath>
@@ -65,47 +64,14 @@ __kernel void trap_probe(__global const float* px, __global const float* py, __g
 )";
 }
 
-std::vector<float> run(const ir::Module& m, int width, const std::vector<V3>& pts) {
-  auto program = sdfrt::build_program(test::device(), probe_kernel(m, width), "");
-  auto kernel = program.kernel("trap_probe");
-  size_t n = (pts.size() + width - 1) / width * width;
-  std::vector<float> x(n, 0), y(n, 0), z(n, 0), out(n, 0);
-  for (size_t i = 0; i < pts.size(); ++i) x[i] = float(pts[i][0]), y[i] = float(pts[i][1]), z[i] = float(pts[i][2]);
-  cl_context ctx = test::device().context();
-  cl_int err = CL_SUCCESS;
-  auto in = [&](float* data) {
-    return sdfrt::BufferHandle(clCreateBuffer(ctx, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, n * sizeof(float), data, &err));
-  };
-  auto bx = in(x.data()), by = in(y.data()), bz = in(z.data());
-  auto bo = sdfrt::BufferHandle(clCreateBuffer(ctx, CL_MEM_WRITE_ONLY, n * sizeof(float), nullptr, &err));
-  EXPECT_EQ(err, CL_SUCCESS);
-  cl_mem args[4] = {bx.get(), by.get(), bz.get(), bo.get()};
-  for (unsigned i = 0; i < 4; ++i) kernel.set_arg(i, args[i]);
-  size_t global = n / width;
-  EXPECT_EQ(clEnqueueNDRangeKernel(test::device().queue(), kernel.get(), 1, nullptr, &global, nullptr, 0, nullptr, nullptr),
-            CL_SUCCESS);
-  EXPECT_EQ(clEnqueueReadBuffer(test::device().queue(), bo.get(), CL_TRUE, 0, n * sizeof(float), out.data(), 0, nullptr,
-                                nullptr),
-            CL_SUCCESS);
-  out.resize(pts.size());
-  return out;
-}
-
 // Points on rays into the set, from a little outside the surface up to it.
 std::vector<V3> near_surface(const ir::Module& m, double radius, std::mt19937_64& rng) {
   std::vector<V3> pts;
   for (int attempt = 0; attempt < 400 && pts.size() < 1200; ++attempt) {
-    V3 o = mul(test::random_unit(rng), 2.5 * radius);
-    V3 rd = test::normalize(test::sub(mul(test::random_unit(rng), 0.4 * radius), o));
-    double t = 0;
-    for (int i = 0; i < 3000 && t < 5 * radius; ++i) {
-      double d = reference::distance(m, add(o, mul(rd, t)));
-      if (d < 1e-4 * radius) {
-        for (int k = 0; k < 12; ++k) pts.push_back(test::to_float_point(add(o, mul(rd, t - k * 2e-4 * radius))));
-        break;
-      }
-      t += d;
-    }
+    auto [o, rd] = test::random_ray(rng, {0, 0, 0}, 2.5 * radius, 0.4 * radius);
+    auto f = [&](const V3& x) { return reference::distance(m, x); };
+    if (auto t = test::trace_to_surface(f, o, rd, 1e-4 * radius, 5 * radius))
+      for (int k = 0; k < 12; ++k) pts.push_back(test::to_float_point(add(o, mul(rd, *t - k * 2e-4 * radius))));
   }
   return pts;
 }
@@ -126,7 +92,7 @@ TEST_P(OrbitColour, TrapAndIterationMatchTheReference) {
     std::mt19937_64 rng(std::hash<std::string>{}(c.name));
     std::vector<V3> pts = near_surface(m, c.radius, rng);
     ASSERT_GE(pts.size(), 1000u) << "too few rays met the set";
-    std::vector<float> got = run(m, width, pts);
+    std::vector<float> got = test::run_point_kernel(probe_kernel(m, width), "trap_probe", pts, width);
     const ir::Node& f = fractal_of(m);
     const bool iteration = std::string(source) == "iteration";
     int close = 0, finite = 0;

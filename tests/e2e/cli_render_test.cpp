@@ -3,7 +3,6 @@
 // leaves (read back with stb_image) and the directory it wrote into.
 #include <gtest/gtest.h>
 #include <stb_image.h>
-#include <sys/wait.h>
 
 #include <fmt/format.h>
 
@@ -12,6 +11,7 @@
 #include <memory>
 
 #include "e2e_support.hpp"
+#include "run_sdfc.hpp"
 #include "sdfc/compile.hpp"
 
 namespace sdfc::e2e {
@@ -19,36 +19,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct RunResult {
-  int exit_code = -1;  // -1: did not exit normally
-  std::string out;     // stdout
-  std::string err;     // stderr
-};
-
 std::string quote(const std::string& s) {
   std::string q = "'";
   for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return q + "'";
-}
-
-// Runs `sdfc ARGS` through the shell; stderr goes to a file in `scratch`
-// (a directory apart from the one under test).
-RunResult run_sdfc(const std::string& args, const fs::path& scratch) {
-  fs::path err_file = scratch / "stderr.txt";
-  std::string cmd = quote(SDFC_BINARY) + " " + args + " 2>" + quote(err_file.string());
-  RunResult r;
-  FILE* p = ::popen(cmd.c_str(), "r");
-  if (!p) return r;
-  char buf[4096];
-  size_t n;
-  while ((n = std::fread(buf, 1, sizeof buf, p)) > 0) r.out.append(buf, n);
-  int status = ::pclose(p);
-  if (WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
-  try {
-    r.err = test::read_text_file(err_file);
-  } catch (...) {
-  }
-  return r;
 }
 
 std::string last_line(const std::string& s) {
@@ -60,12 +34,12 @@ std::string last_line(const std::string& s) {
 
 TEST(CliRender, WritesThePngAndPrintsItsPath) {
   test::device();  // opened first so the child inherits SDFC_KERNEL_CACHE (see sdfc_test_support.hpp)
-  test::TempDir out_dir, scratch;
+  test::TempDir out_dir;
   const fs::path scene = fs::path(SDFC_SOURCE_DIR) / "examples" / "mandelbulb.yaml";
   const fs::path png = out_dir.path() / "m.png";
-  RunResult r = run_sdfc(fmt::format("render {} -o {} --width 96 --height 54", quote(scene.string()), quote(png.string())),
-                         scratch.path());
-  ASSERT_EQ(r.exit_code, 0) << "stdout:\n" << r.out << "\nstderr:\n" << r.err;
+  test::RunResult r =
+      test::run_sdfc(fmt::format("render {} -o {} --width 96 --height 54", quote(scene.string()), quote(png.string())));
+  ASSERT_EQ(r.code, 0) << "stdout:\n" << r.out << "\nstderr:\n" << r.err;
 
   // stdout names the image (and only stdout: progress goes to stderr).
   std::string printed = last_line(r.out);
@@ -108,12 +82,11 @@ TEST(CliRender, WritesThePngAndPrintsItsPath) {
 }
 
 TEST(CliRender, MissingSceneFailsWithoutWritingAnything) {
-  test::TempDir out_dir, scratch;
+  test::TempDir out_dir;
   const fs::path png = out_dir.path() / "m.png";
-  RunResult r = run_sdfc(fmt::format("render {} -o {} --width 96 --height 54",
-                                     quote((out_dir.path() / "no-such-scene.yaml").string()), quote(png.string())),
-                         scratch.path());
-  EXPECT_NE(r.exit_code, 0);
+  test::RunResult r = test::run_sdfc(fmt::format("render {} -o {} --width 96 --height 54",
+                                                 quote((out_dir.path() / "no-such-scene.yaml").string()), quote(png.string())));
+  EXPECT_NE(r.code, 0);
   EXPECT_EQ(r.out, "") << "stdout must stay empty on failure";
   EXPECT_NE(r.err.find("no-such-scene.yaml"), std::string::npos) << "the error should name the file:\n" << r.err;
   EXPECT_TRUE(out_dir.file_names().empty());

@@ -2,7 +2,6 @@
 // 16-bit PNG, progressive samples, sequences from one kernel build.
 #include <gtest/gtest.h>
 #include <stb_image.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -12,21 +11,15 @@
 #include <fstream>
 #include <sstream>
 
+#include "run_sdfc.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int code;
-  std::string out, err;
-};
+using Result = sdfc::test::RunResult;
 
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+std::string slurp(const fs::path& path) { return sdfc::test::read_text(path.string()); }
 
 class OfflineOutput : public ::testing::Test {
  protected:
@@ -37,12 +30,7 @@ class OfflineOutput : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
 
-  Result sdfc(const std::string& args) {
-    std::string out = (dir_ / "stdout").string(), err = (dir_ / "stderr").string();
-    std::string cmd = std::string(SDFC_BINARY) + " " + args + " >" + out + " 2>" + err;
-    int status = std::system(cmd.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
-  }
+  Result sdfc(const std::string& args) { return sdfc::test::run_sdfc(args); }
   std::string scene(const std::string& text) {
     fs::path p = dir_ / "scene.yaml";
     std::ofstream(p) << text;

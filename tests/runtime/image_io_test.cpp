@@ -132,7 +132,7 @@ TEST(WritePng, ReplacesAnExistingFile) {
   const auto path = dir.path() / "again.png";
   std::ofstream(path) << "old contents";
   write_png(path.string(), sample_image());
-  EXPECT_EQ(test::read_file(path).substr(1, 3), "PNG");
+  EXPECT_EQ(test::read_text_file(path).substr(1, 3), "PNG");
 }
 
 TEST(WriteErrors, MissingDirectoryThrowsIoErrorNamingPath) {
@@ -189,7 +189,7 @@ TEST(WriteErrors, FailedWriteRemovesTempFileAndKeepsOldImage) {
 
   EXPECT_TRUE(threw);
   EXPECT_EQ(dir.file_names(), std::vector<std::string>{"big.pfm"});
-  EXPECT_EQ(test::read_file(path), "previous image");
+  EXPECT_EQ(test::read_text_file(path), "previous image");
 }
 
 TEST(WritePfm, SingleChannelHeaderSizeAndRowOrder) {
@@ -200,7 +200,7 @@ TEST(WritePfm, SingleChannelHeaderSizeAndRowOrder) {
   const WriteReport report = write_pfm(path.string(), image, 3);
   EXPECT_EQ(report.nonfinite_samples, 1);
 
-  const std::string bytes = test::read_file(path);
+  const std::string bytes = test::read_text_file(path);
   const std::string header = "Pf\n5 3\n-1.0\n";
   ASSERT_EQ(bytes.size(), header.size() + 5 * 3 * sizeof(float));
   EXPECT_EQ(report.bytes, bytes.size());
@@ -220,7 +220,7 @@ TEST(WritePfm, RgbHeaderSizeAndInterleaving) {
   const auto path = dir.path() / "color.pfm";
   const FloatImage image = sample_image();
   write_pfm_rgb(path.string(), image);
-  const std::string bytes = test::read_file(path);
+  const std::string bytes = test::read_text_file(path);
   const std::string header = "PF\n5 3\n-1.0\n";
   ASSERT_EQ(bytes.size(), header.size() + 5 * 3 * 3 * sizeof(float));
   EXPECT_EQ(bytes.substr(0, header.size()), header);

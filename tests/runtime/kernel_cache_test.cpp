@@ -12,6 +12,7 @@ namespace sdfrt {
 namespace {
 
 using test::ScopedEnv;
+using test::same_bits;
 using test::TempDir;
 
 FloatImage render_small(Renderer& renderer) {
@@ -19,11 +20,6 @@ FloatImage render_small(Renderer& renderer) {
   options.tile_width = 16;
   options.tile_height = 16;
   return renderer.render({0.25f}, 40, 20, options);
-}
-
-bool same_bits(const FloatImage& a, const FloatImage& b) {
-  return a.data.size() == b.data.size() &&
-         std::memcmp(a.data.data(), b.data.data(), a.data.size() * sizeof(float)) == 0;
 }
 
 TEST(KernelCache, SecondBuildIsAHitWithIdenticalOutput) {
@@ -63,7 +59,7 @@ TEST(KernelCache, CorruptOrTruncatedEntryFallsBackToSourceBuild) {
   ScopedEnv cache_dir("SDFC_CACHE_DIR", dir.path().string());
   Renderer original(test::test_device(), test::gradient_spec(1));
   const auto entry = dir.path() / dir.file_names().at(0);
-  const std::string good = test::read_file(entry);
+  const std::string good = test::read_text_file(entry);
   ASSERT_GT(good.size(), 64u);
 
   const std::string damaged[] = {
@@ -77,7 +73,7 @@ TEST(KernelCache, CorruptOrTruncatedEntryFallsBackToSourceBuild) {
     EXPECT_FALSE(rebuilt.build_stats().cache_hit);
     EXPECT_TRUE(same_bits(render_small(original), render_small(rebuilt)));
     // Rewritten with a valid entry (binaries need not be byte-identical).
-    const std::string rewritten = test::read_file(entry);
+    const std::string rewritten = test::read_text_file(entry);
     EXPECT_NE(rewritten, bytes);
     EXPECT_EQ(rewritten.substr(0, 8), "SDFCKBIN");
   }

@@ -10,6 +10,8 @@
 namespace sdfrt {
 namespace {
 
+using test::same_bits;
+
 // Odd sizes so edge tiles, clamping and SIMD padding are all exercised.
 constexpr int kWidth = 100;
 constexpr int kHeight = 37;
@@ -40,11 +42,6 @@ void expect_gradient(const FloatImage& image) {
     }
   }
   EXPECT_EQ(mismatches, 0);
-}
-
-bool same_bits(const FloatImage& a, const FloatImage& b) {
-  return a.data.size() == b.data.size() &&
-         std::memcmp(a.data.data(), b.data.data(), a.data.size() * sizeof(float)) == 0;
 }
 
 class RendererBySimd : public ::testing::TestWithParam<int> {};

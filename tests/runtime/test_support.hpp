@@ -8,21 +8,12 @@
 #include <string>
 #include <vector>
 
+#include "test_files.hpp"
+
 namespace sdfrt::test {
 
-// A fresh directory under /tmp, removed with everything in it.
-class TempDir {
- public:
-  TempDir();
-  ~TempDir();
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-  const std::filesystem::path& path() const { return path_; }
-  std::vector<std::string> file_names() const;  // sorted
-
- private:
-  std::filesystem::path path_;
-};
+using sdfc::test::read_text_file;
+using sdfc::test::TempDir;
 
 // Sets (or unsets, with nullopt) an environment variable for one scope.
 class ScopedEnv {
@@ -37,6 +28,9 @@ class ScopedEnv {
   std::optional<std::string> old_;
 };
 
+// True when both images hold exactly the same floats (bit for bit).
+bool same_bits(const FloatImage& a, const FloatImage& b);
+
 // The default device, opened once per test process.
 Device& test_device();
 
@@ -44,7 +38,5 @@ Device& test_device();
 // simd_width 1 (scalar) or 8 (float8 + vstore8).
 KernelSpec gradient_spec(int simd_width);
 float expected_gradient(int plane, int x, int y, int width, int height, float frame0);
-
-std::string read_file(const std::filesystem::path& path);
 
 }  // namespace sdfrt::test

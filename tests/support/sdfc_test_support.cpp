@@ -6,9 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <numbers>
-#include <sstream>
 #include <stdexcept>
 
 #include "sdfc/compile.hpp"
@@ -38,14 +36,6 @@ ir::Module compile_text(const std::string& yaml, const std::string& name, const 
   return build_module(doc, name);
 }
 
-std::string read_text_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read " + path.string());
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 // ---- probe ----------------------------------------------------------------
 
 namespace {
@@ -62,6 +52,27 @@ sdfrt::BufferHandle make_buffer(cl_context ctx, cl_mem_flags flags, size_t float
   return sdfrt::BufferHandle(m);
 }
 
+// The points' coordinates as three float buffers, padded with zeros to a
+// whole number of `simd_width`-point packets (at least one).
+struct PointBuffers {
+  size_t padded;
+  sdfrt::BufferHandle x, y, z;
+};
+
+PointBuffers upload_points(const std::vector<V3>& points, size_t simd_width) {
+  const size_t n = points.size();
+  const size_t padded = std::max<size_t>(simd_width, (n + simd_width - 1) / simd_width * simd_width);
+  std::vector<float> x(padded, 0.0f), y(padded, 0.0f), z(padded, 0.0f);
+  for (size_t i = 0; i < n; ++i) {
+    x[i] = static_cast<float>(points[i][0]);
+    y[i] = static_cast<float>(points[i][1]);
+    z[i] = static_cast<float>(points[i][2]);
+  }
+  cl_context ctx = device().context();
+  return {padded, make_buffer(ctx, CL_MEM_READ_ONLY, padded, x.data()), make_buffer(ctx, CL_MEM_READ_ONLY, padded, y.data()),
+          make_buffer(ctx, CL_MEM_READ_ONLY, padded, z.data())};
+}
+
 }  // namespace
 
 Probe::Probe(const ir::Module& m, int simd_width) {
@@ -71,24 +82,15 @@ Probe::Probe(const ir::Module& m, int simd_width) {
 }
 
 ProbeResult Probe::run(const std::vector<V3>& points, double time) {
-  const size_t w = static_cast<size_t>(emitted_.simd_width);
   const size_t n = points.size();
-  const size_t padded = std::max<size_t>(w, (n + w - 1) / w * w);
-  std::vector<float> x(padded, 0.0f), y(padded, 0.0f), z(padded, 0.0f);
-  for (size_t i = 0; i < n; ++i) {
-    x[i] = static_cast<float>(points[i][0]);
-    y[i] = static_cast<float>(points[i][1]);
-    z[i] = static_cast<float>(points[i][2]);
-  }
+  PointBuffers in = upload_points(points, static_cast<size_t>(emitted_.simd_width));
+  const size_t w = static_cast<size_t>(emitted_.simd_width), padded = in.padded;
   cl_context ctx = device().context();
   cl_command_queue q = device().queue();
-  auto bx = make_buffer(ctx, CL_MEM_READ_ONLY, padded, x.data());
-  auto by = make_buffer(ctx, CL_MEM_READ_ONLY, padded, y.data());
-  auto bz = make_buffer(ctx, CL_MEM_READ_ONLY, padded, z.data());
   auto bd = make_buffer(ctx, CL_MEM_WRITE_ONLY, padded, nullptr);
   auto bdm = make_buffer(ctx, CL_MEM_WRITE_ONLY, padded, nullptr);
   auto bm = make_buffer(ctx, CL_MEM_WRITE_ONLY, padded, nullptr);
-  cl_mem args[6] = {bx.get(), by.get(), bz.get(), bd.get(), bdm.get(), bm.get()};
+  cl_mem args[6] = {in.x.get(), in.y.get(), in.z.get(), bd.get(), bdm.get(), bm.get()};
   for (unsigned i = 0; i < 6; ++i) kernel_->set_arg(i, args[i]);
   kernel_->set_arg(6, static_cast<float>(time));
   size_t global = padded / w;
@@ -112,22 +114,13 @@ ProbeResult Probe::run(const std::vector<V3>& points, double time) {
 
 std::vector<std::array<float, 6>> Probe::run_material(const std::vector<V3>& points) {
   sdfrt::Kernel kernel = program_->kernel("sdfc_probe_material");
-  const size_t w = static_cast<size_t>(emitted_.simd_width);
   const size_t n = points.size();
-  const size_t padded = std::max<size_t>(w, (n + w - 1) / w * w);
-  std::vector<float> x(padded, 0.0f), y(padded, 0.0f), z(padded, 0.0f);
-  for (size_t i = 0; i < n; ++i) {
-    x[i] = static_cast<float>(points[i][0]);
-    y[i] = static_cast<float>(points[i][1]);
-    z[i] = static_cast<float>(points[i][2]);
-  }
+  PointBuffers in = upload_points(points, static_cast<size_t>(emitted_.simd_width));
+  const size_t w = static_cast<size_t>(emitted_.simd_width), padded = in.padded;
   cl_context ctx = device().context();
   cl_command_queue q = device().queue();
-  auto bx = make_buffer(ctx, CL_MEM_READ_ONLY, padded, x.data());
-  auto by = make_buffer(ctx, CL_MEM_READ_ONLY, padded, y.data());
-  auto bz = make_buffer(ctx, CL_MEM_READ_ONLY, padded, z.data());
   auto bo = make_buffer(ctx, CL_MEM_WRITE_ONLY, 6 * padded, nullptr);
-  cl_mem args[4] = {bx.get(), by.get(), bz.get(), bo.get()};
+  cl_mem args[4] = {in.x.get(), in.y.get(), in.z.get(), bo.get()};
   for (unsigned i = 0; i < 4; ++i) kernel.set_arg(i, args[i]);
   cl_int planes = static_cast<cl_int>(padded);
   kernel.set_arg(4, planes);
@@ -142,6 +135,27 @@ std::vector<std::array<float, 6>> Probe::run_material(const std::vector<V3>& poi
   for (size_t i = 0; i < n; ++i)
     for (size_t c = 0; c < 6; ++c) r[i][c] = out[c * padded + i];
   return r;
+}
+
+std::vector<float> run_point_kernel(const std::string& source, const std::string& name, const std::vector<V3>& points,
+                                    int simd_width) {
+  sdfrt::Program program = sdfrt::build_program(device(), source, "");
+  sdfrt::Kernel kernel = program.kernel(name);
+  const size_t w = static_cast<size_t>(simd_width), n = points.size();
+  PointBuffers in = upload_points(points, w);
+  const size_t padded = in.padded;
+  cl_command_queue q = device().queue();
+  auto bo = make_buffer(device().context(), CL_MEM_WRITE_ONLY, padded, nullptr);
+  cl_mem args[4] = {in.x.get(), in.y.get(), in.z.get(), bo.get()};
+  for (unsigned i = 0; i < 4; ++i) kernel.set_arg(i, args[i]);
+  size_t global = padded / w;
+  check(clEnqueueNDRangeKernel(q, kernel.get(), 1, nullptr, &global, nullptr, 0, nullptr, nullptr),
+        "clEnqueueNDRangeKernel");
+  std::vector<float> out(padded);
+  check(clEnqueueReadBuffer(q, bo.get(), CL_TRUE, 0, padded * sizeof(float), out.data(), 0, nullptr, nullptr),
+        "clEnqueueReadBuffer");
+  out.resize(n);
+  return out;
 }
 
 double round_to_float(double x) {
@@ -191,24 +205,10 @@ V3 random_unit(std::mt19937_64& rng) {
   return normalize(v);
 }
 
-// ---- files ----------------------------------------------------------------
-
-TempDir::TempDir() {
-  std::string pattern = (std::filesystem::temp_directory_path() / "sdfc-test-XXXXXX").string();
-  if (!::mkdtemp(pattern.data())) throw std::runtime_error("mkdtemp failed");
-  path_ = pattern;
-}
-
-TempDir::~TempDir() {
-  std::error_code ec;
-  std::filesystem::remove_all(path_, ec);
-}
-
-std::vector<std::string> TempDir::file_names() const {
-  std::vector<std::string> names;
-  for (const auto& e : std::filesystem::directory_iterator(path_)) names.push_back(e.path().filename().string());
-  std::sort(names.begin(), names.end());
-  return names;
+Ray random_ray(std::mt19937_64& rng, const V3& centre, double from, double to) {
+  V3 o = add(centre, mul(random_unit(rng), from));
+  V3 aim = add(centre, mul(random_unit(rng), to));
+  return {o, normalize(sub(aim, o))};
 }
 
 }  // namespace sdfc::test

@@ -1,7 +1,8 @@
 #pragma once
 // Helpers shared by the conformance and end-to-end suites: one OpenCL device
 // per test process, scenes compiled from YAML text, the generated
-// `sdfc_probe` kernel run on real points, small vector maths and temp dirs.
+// `sdfc_probe` kernel run on real points, small vector maths (and, from
+// test_files.hpp, temp dirs and file reads).
 #include <sdfrt/device.hpp>
 #include <sdfrt/program.hpp>
 
@@ -15,6 +16,7 @@
 #include "sdfc/codegen/emit_opencl.hpp"
 #include "sdfc/ir/module.hpp"
 #include "sdfc/reference/evaluator.hpp"
+#include "test_files.hpp"
 
 namespace sdfc::test {
 
@@ -30,9 +32,6 @@ sdfrt::Device& device();
 // YAML text -> optimised module (load_yaml_text + overrides + build_module).
 ir::Module compile_text(const std::string& yaml, const std::string& name = "test.yaml",
                         const std::vector<std::string>& overrides = {});
-
-// Reads a whole file into a string; throws std::runtime_error when it cannot.
-std::string read_text_file(const std::filesystem::path& path);
 
 // ---- the probe kernel -----------------------------------------------------
 
@@ -63,6 +62,13 @@ class Probe {
   std::optional<sdfrt::Program> program_;
   std::optional<sdfrt::Kernel> kernel_;
 };
+
+// Builds `source` and runs its kernel `name(px, py, pz, out)` (three float
+// coordinate arrays in, one float per point out, one work-item per
+// `simd_width` points) once over all the points; returns out per point.
+// For a test's own probe kernel appended to an emitted scene kernel.
+std::vector<float> run_point_kernel(const std::string& source, const std::string& name, const std::vector<V3>& points,
+                                    int simd_width);
 
 // The point as the probe sees it: each coordinate rounded to float.
 V3 to_float_point(const V3& p);
@@ -127,20 +133,25 @@ std::vector<V3> surface_points(F&& f, const V3& lo, const V3& hi, size_t n, std:
   return out;
 }
 
-// ---- files ----------------------------------------------------------------
-
-// A fresh directory under the temp dir, removed with its contents.
-class TempDir {
- public:
-  TempDir();
-  ~TempDir();
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-  const std::filesystem::path& path() const { return path_; }
-  std::vector<std::string> file_names() const;  // sorted
-
- private:
-  std::filesystem::path path_;
+// A ray from a random point at distance `from` of `centre` towards a random
+// point at distance `to` of it (|rd| = 1).
+struct Ray {
+  V3 o, rd;
 };
+Ray random_ray(std::mt19937_64& rng, const V3& centre, double from, double to);
+
+// Sphere tracing of the ray o + t rd against the distance bound `f` from
+// t = 0: the first t where f < eps, or nullopt once t reaches t_max or after
+// max_steps steps.
+template <typename F>
+std::optional<double> trace_to_surface(F&& f, const V3& o, const V3& rd, double eps, double t_max, int max_steps = 3000) {
+  double t = 0;
+  for (int i = 0; i < max_steps && t < t_max; ++i) {
+    double d = f(add(o, mul(rd, t)));
+    if (d < eps) return t;
+    t += d;
+  }
+  return std::nullopt;
+}
 
 }  // namespace sdfc::test

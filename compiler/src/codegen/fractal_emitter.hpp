@@ -17,15 +17,16 @@ bool is_fractal(const ir::Node& n);
 std::string emit_fractal(const ir::Node& n, const std::string& p, const Literals& lit, CodeWriter& w,
                          std::set<std::string>& used);
 
-// The node's colour value at `p` (evaluated once per hit): its orbit trap,
-// or with `iteration` its smooth iteration count in [0, 1]. Writes any
-// statements it needs to `w`; "" for kinds without one.
+// The values of the node's orbit from `p` (evaluated once per hit or pixel,
+// never in the march): its orbit trap, its smooth iteration count in [0, 1]
+// (an orbit-trap material's `source: iteration`), or its escape iteration
+// for the iterations AOV (the configured count of folding fractals, which
+// never escape, and of hybrids).
+enum class OrbitValue { Trap, Smooth, Escape };
+
+// The node's orbit value at `p`. Writes any statements it needs to `w`; ""
+// for kinds without an orbit.
 std::string emit_fractal_trap(const ir::Node& n, const std::string& p, const Literals& lit, CodeWriter& w,
-                              std::set<std::string>& used, bool iteration);
-// The fractal's iteration count at p for the iterations AOV: the escape
-// iteration of escape-time fractals, the configured count of folding ones
-// (which never escape) and of hybrids.
-std::string emit_fractal_iterations(const ir::Node& n, const std::string& p, const Literals& lit,
-                                    std::set<std::string>& used);
+                              std::set<std::string>& used, OrbitValue value);
 
 }  // namespace sdfc::codegen::detail

@@ -145,7 +145,7 @@ class SceneEmitter {
       trap = lit_.typed(0);
       if (!md.trap_palette.empty() && is_fractal(n)) {
         const bool iteration = md.trap_source == ir::MaterialDef::TrapSource::Iteration;
-        std::string t = emit_fractal_trap(n, leaf_p_, lit_, w_, used_, iteration);
+        std::string t = emit_fractal_trap(n, leaf_p_, lit_, w_, used_, iteration ? OrbitValue::Smooth : OrbitValue::Trap);
         if (!t.empty()) trap = t;
       }
       trap = ", " + trap;
@@ -331,9 +331,10 @@ class SceneEmitter {
         if (is_fractal(n)) {
           std::string expr = emit_fractal(n, p, lit_, w_, used_);
           Value v = leaf(n, expr);
-          std::string trap = iterations_ ? emit_fractal_iterations(n, p, lit_, used_)
-                             : trap_     ? emit_fractal_trap(n, p, lit_, w_, used_, iteration_.count(id) > 0)
-                                         : "";
+          const OrbitValue value = iterations_           ? OrbitValue::Escape
+                                   : iteration_.count(id) ? OrbitValue::Smooth
+                                                          : OrbitValue::Trap;
+          std::string trap = trap_ ? emit_fractal_trap(n, p, lit_, w_, used_, value) : "";
           if (!trap.empty()) {
             v.mat = var(iterations_ ? "it" : "trap");
             w_.line(fmt::format("real {} = {};  // {}", v.mat, trap,

@@ -1,6 +1,7 @@
 #pragma once
 // Runs the real sdfc binary the way a user's shell does, with extra
-// environment and shell setup (ulimit) where a test needs them.
+// environment and shell setup (ulimit) where a test needs them. Shared by
+// the CLI, effects, e2e and robustness suites; link sdfc_test_cli.
 #include <string>
 
 namespace sdfc::test {
@@ -10,9 +11,10 @@ struct RunResult {
   std::string out, err;
 };
 
-// Runs `[prefix] sdfc ARGS` through /bin/sh in the repository root. `prefix`
-// is shell text put before the command (e.g. "ulimit -f 4; " or
-// "OCL_ICD_VENDORS=/x ").
+// Runs `[prefix] sdfc ARGS` through /bin/sh in the repository root, its
+// stdout and stderr captured through files in a ScratchDir (so never in a
+// directory under test). `prefix` is shell text put before the command
+// (e.g. "ulimit -f 4; " or "OCL_ICD_VENDORS=/x ").
 RunResult run_sdfc(const std::string& args, const std::string& prefix = "");
 
 // A fresh directory under the test temp dir, removed at the end of scope.
