@@ -218,7 +218,7 @@ Action add_render(CLI::App& app) {
                   "Build this OpenCL file instead of the generated kernel (a hand-edited 'sdfc compile' output "
                   "for the same scene, --simd-width and --packet-rows)");
   cmd->add_flag("--reference", a->reference,
-                "Reference render of the same view: a 4x4 grid of rays per pixel (--reference-samples), double "
+                "Reference render of the same view: an 8x8 grid of rays per pixel (--reference-samples), double "
                 "precision, hit epsilon 0.01 px, 20000 steps, step factor 0.5, bisection of every hit, central "
                 "normals; writes the depth, normal and hit AOVs as pixel averages (hit = coverage) (slow)");
   cmd->add_option("--reference-epsilon", a->reference_epsilon,
@@ -226,7 +226,7 @@ Action add_render(CLI::App& app) {
                   "where a 10x smaller value changes nothing)")
       ->check(CLI::Range(1e-12, 1.0));
   cmd->add_option("--reference-samples", a->reference_samples,
-                  "The reference's rays per pixel: an N x N stratified grid (default 4: 16 rays; 1 = the pixel centre)")
+                  "The reference's rays per pixel: an N x N stratified grid (default 8: 64 rays; 1 = the pixel centre)")
       ->check(CLI::Range(1, 16));
   return [a] { return run_render(*a); };
 }

@@ -82,7 +82,7 @@ struct MarchSettings {
 // normal is the one a render resolves, not sub-pixel detail (dual normals
 // stay: they are exact already).
 inline constexpr double kReferenceHitEpsilon = 0.01;  // px; why: docs/accuracy.md
-inline constexpr int kReferenceGrid = 4;  // 4 x 4 rays per pixel; why: docs/accuracy.md
+inline constexpr int kReferenceGrid = 8;  // 8 x 8 rays per pixel; why: docs/accuracy.md
 inline void make_reference(MarchSettings& s, double hit_epsilon = kReferenceHitEpsilon, int grid = 1) {
   if (grid > 1) {
     s.samples = grid * grid;
