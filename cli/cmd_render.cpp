@@ -227,7 +227,7 @@ Action add_render(CLI::App& app) {
       ->check(CLI::Range(1e-12, 1.0));
   cmd->add_option("--reference-samples", a->reference_samples,
                   "The reference's rays per pixel: an N x N stratified grid (default 8: 64 rays; 1 = the pixel centre)")
-      ->check(CLI::Range(1, 16));
+      ->check(CLI::Range(1, 32));
   return [a] { return run_render(*a); };
 }
 

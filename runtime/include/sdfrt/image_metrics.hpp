@@ -42,7 +42,7 @@ struct ComparisonMetrics {
   double depth_rel_error_median = 0, depth_rel_error_p99 = 0;  // |d - d_ref| / d_ref
   double normal_error_deg_median = 0, normal_error_deg_p99 = 0;  // angle
   // The same over the pixels the reference covers fully (coverage 1) and
-  // the test covers: no silhouette or pore inside the pixel.
+  // the test covers: no silhouette or pore inside the pixel (NaN if none).
   double normal_error_deg_median_interior = 0, normal_error_deg_p99_interior = 0;
   // Pixels where some display-encoded channel differs by more than
   // pixel_threshold (in [0, 1]; the default 4/255 is 4 levels of an 8-bit PNG,

@@ -144,8 +144,10 @@ ComparisonMetrics compare_renders(const RenderOutputs& ref, const RenderOutputs&
       }
     }
     m.coverage_diff_mean_pct = n ? 100.0 * coverage_diff / double(n) : 0.0;
-    m.normal_error_deg_median_interior = quantile(normal_err_interior, 0.5);
-    m.normal_error_deg_p99_interior = quantile(normal_err_interior, 0.99);
+    // NaN (null in JSON) when the reference covers no pixel fully (a sparse fractal)
+    const double none = std::numeric_limits<double>::quiet_NaN();
+    m.normal_error_deg_median_interior = normal_err_interior.empty() ? none : quantile(normal_err_interior, 0.5);
+    m.normal_error_deg_p99_interior = normal_err_interior.empty() ? none : quantile(normal_err_interior, 0.99);
     m.hit_mask_disagreement_pct = 100.0 * double(disagree) / double(n);
     m.holes_pct = 100.0 * double(holes) / double(n);
     m.passed_pct = 100.0 * double(passed) / double(n);
@@ -171,8 +173,11 @@ std::string format_table(const ComparisonMetrics& m) {
   if (m.has_normal) {
     s += fmt::format("{:<32} {:.3f} / {:.3f} deg\n", "normal error, median / p99", m.normal_error_deg_median,
                      m.normal_error_deg_p99);
-    s += fmt::format("{:<32} {:.3f} / {:.3f} deg\n", "  where the reference covers all", m.normal_error_deg_median_interior,
-                     m.normal_error_deg_p99_interior);
+    if (std::isnan(m.normal_error_deg_p99_interior))
+      s += fmt::format("{:<32} {}\n", "  where the reference covers all", "no pixel is fully covered");
+    else
+      s += fmt::format("{:<32} {:.3f} / {:.3f} deg\n", "  where the reference covers all", m.normal_error_deg_median_interior,
+                       m.normal_error_deg_p99_interior);
   }
   s += fmt::format("{:<32} {:.4f} %\n", fmt::format("pixels differing > {:.1f}/255", m.pixel_threshold * 255),
                    m.pixels_differing_pct);
