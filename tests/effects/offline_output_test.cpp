@@ -277,6 +277,8 @@ TEST_F(OfflineOutput, SampledAovsArePixelAverages) {
   auto [hit, depth, normal] = render("grid", ", samples: 256, sampling: grid", "");
   auto [hit1, depth1, normal1] = render("one", "", "");
   auto [hit_r, depth_r, normal_r] = render("once", ", samples: 256, sampling: grid", "--repeat 1");
+  auto [hit_r2, depth_r2, normal_r2] = render("r2", ", samples: 64", "");  // the default R2 pattern
+  ASSERT_FALSE(hit_r2.empty());
   ASSERT_FALSE(hit.empty());
   ASSERT_FALSE(hit1.empty());
   ASSERT_FALSE(hit_r.empty());
@@ -297,6 +299,7 @@ TEST_F(OfflineOutput, SampledAovsArePixelAverages) {
       const double area = double(inside) / (sub * sub);
       worst = std::max(worst, std::fabs(hit[k] - area));
       EXPECT_NEAR(hit[k], area, 0.03) << "pixel " << i << ", " << j;
+      EXPECT_NEAR(hit_r2[k], area, 0.1) << "R2, pixel " << i << ", " << j;
       if (hit[k] > 0.05 && hit[k] < 0.95) ++partial;
       EXPECT_TRUE(hit1[k] == 0.0f || hit1[k] == 1.0f) << hit1[k];
       EXPECT_EQ(hit1[k] > 0, depth1[k] >= 0);
