@@ -60,11 +60,12 @@ struct RenderArgs {
   std::string kernel_file;  // a hand-edited kernel to build instead of the generated one
   bool reference = false;
   double reference_epsilon = ir::kReferenceHitEpsilon;
+  int reference_samples = ir::kReferenceGrid;  // N: an N x N grid of rays per pixel
 };
 
 // --reference: ir::make_reference, plus the depth, normal and hit AOVs.
-void make_reference(ir::MarchSettings& s, double eps, std::vector<std::string>& aovs) {
-  ir::make_reference(s, eps);
+void make_reference(ir::MarchSettings& s, double eps, int grid, std::vector<std::string>& aovs) {
+  ir::make_reference(s, eps, grid);
   for (const char* a : {"depth", "normal", "hit"})
     if (std::find(aovs.begin(), aovs.end(), a) == aovs.end()) aovs.push_back(a);
 }
@@ -97,7 +98,7 @@ int run_render(RenderArgs a) {
   if (a.height > 0) a.scene.sets.push_back(fmt::format("render.height={}", a.height));
   SourceValue doc = load_scene_source(a.scene.path, a.scene.sets);
   ir::Module m = build_module(doc, a.scene.path);
-  if (a.reference) make_reference(m.plan.march, a.reference_epsilon, a.aovs);
+  if (a.reference) make_reference(m.plan.march, a.reference_epsilon, a.reference_samples, a.aovs);
 
   std::signal(SIGABRT, on_driver_abort);
   sdfrt::Device device = sdfrt::open_device(a.device.empty() ? std::nullopt : std::optional<std::string>(a.device));
@@ -217,12 +218,16 @@ Action add_render(CLI::App& app) {
                   "Build this OpenCL file instead of the generated kernel (a hand-edited 'sdfc compile' output "
                   "for the same scene, --simd-width and --packet-rows)");
   cmd->add_flag("--reference", a->reference,
-                "Reference render of the same view: double precision, hit epsilon 0.01 px, 20000 steps, step factor "
-                "0.5, bisection of every hit, central normals; writes the depth, normal and hit AOVs (slow)");
+                "Reference render of the same view: an 8x8 grid of rays per pixel (--reference-samples), double "
+                "precision, hit epsilon 0.01 px, 20000 steps, step factor 0.5, bisection of every hit, central "
+                "normals; writes the depth, normal and hit AOVs as pixel averages (hit = coverage) (slow)");
   cmd->add_option("--reference-epsilon", a->reference_epsilon,
                   "The reference's hit epsilon in pixel footprints (a convergence check: the reference is trusted "
                   "where a 10x smaller value changes nothing)")
       ->check(CLI::Range(1e-12, 1.0));
+  cmd->add_option("--reference-samples", a->reference_samples,
+                  "The reference's rays per pixel: an N x N stratified grid (default 8: 64 rays; 1 = the pixel centre)")
+      ->check(CLI::Range(1, 32));
   return [a] { return run_render(*a); };
 }
 

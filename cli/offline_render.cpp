@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <span>
 #include <regex>
 #include <sdfrt/errors.hpp>
 #include <sdfrt/progress.hpp>
@@ -27,28 +29,15 @@ int plane_of(const sdfrt::KernelSpec& spec, const std::string& name) {
   return static_cast<int>(it - spec.planes.begin());
 }
 
-// The hit mask of a band: 1 where depth >= 0 (a hit), 0 on a miss.
-sdfrt::FloatImage hit_mask(const sdfrt::FloatImage& band, int depth_plane) {
-  sdfrt::FloatImage m(band.width, band.height, {"hit"});
-  auto d = band.plane(depth_plane);
-  auto h = m.plane(0);
-  for (std::size_t i = 0; i < d.size(); ++i) h[i] = d[i] >= 0.0f ? 1.0f : 0.0f;
-  return m;
-}
-
 struct AovWriters {
   std::vector<std::unique_ptr<sdfrt::BandWriter>> writers;
   std::vector<std::string> paths;
-  std::vector<int> derived_from;  // for "hit": the depth plane; -1 otherwise
   AovWriters(const sdfrt::KernelSpec& spec, int width, int height, const std::string& beauty,
              const std::vector<std::string>& aovs) {
     for (const auto& a : aovs) {
       std::vector<int> planes;
-      derived_from.push_back(a == "hit" ? plane_of(spec, "depth") : -1);
       if (a == "normal")
         planes = {plane_of(spec, "normal_x"), plane_of(spec, "normal_y"), plane_of(spec, "normal_z")};
-      else if (a == "hit")
-        planes = {0};
       else
         planes = {plane_of(spec, a)};
       paths.push_back(aov_path(beauty, a));
@@ -58,15 +47,66 @@ struct AovWriters {
   AovWriters(const sdfrt::KernelSpec& spec, const OfflineFrame& f, const OfflineOutput& out)
       : AovWriters(spec, f.width, f.height, out.beauty, out.aovs) {}
   void write(const sdfrt::FloatImage& band) {
-    for (std::size_t i = 0; i < writers.size(); ++i) {
-      if (derived_from[i] >= 0)
-        writers[i]->write_band(hit_mask(band, derived_from[i]));
-      else
-        writers[i]->write_band(band);
-    }
+    for (auto& w : writers) w->write_band(band);
   }
   void finish() {
     for (auto& w : writers) w->finish();
+  }
+};
+
+// Progressive rendering with AOVs: each pass gives the AOVs of one sample;
+// these sums make them the pixel averages the kernel gives for a pass of
+// several samples (hit = coverage; depth, normal, iterations = means over
+// the samples that hit; steps = mean; material = the first sample that hits).
+struct AovMean {
+  int w, h;
+  int depth, nx, ny, nz, steps, material, iterations, hit;  // planes of the band
+  std::vector<std::string> names;
+  std::vector<float> hits, depth_sum, normal_sum, steps_sum, iter_sum, first_material;
+  int passes = 0;
+  AovMean(const sdfrt::KernelSpec& spec, int w_, int h_)
+      : w(w_), h(h_), depth(plane_of(spec, "depth")), nx(plane_of(spec, "normal_x")), ny(plane_of(spec, "normal_y")),
+        nz(plane_of(spec, "normal_z")), steps(plane_of(spec, "steps")), material(plane_of(spec, "material")),
+        iterations(plane_of(spec, "iterations")), hit(plane_of(spec, "hit")), names(spec.planes) {
+    const std::size_t n = std::size_t(w) * std::size_t(h);
+    hits.assign(n, 0.0f), depth_sum.assign(n, 0.0f), normal_sum.assign(3 * n, 0.0f), steps_sum.assign(n, 0.0f);
+    iter_sum.assign(n, 0.0f), first_material.assign(n, -1.0f);
+  }
+  // One pass of one sample per pixel, rows [y0, y0 + band.height).
+  void add(const sdfrt::FloatImage& band, int y0) {
+    const std::size_t n = std::size_t(w) * std::size_t(h), at = std::size_t(y0) * std::size_t(w);
+    auto d = band.plane(depth), c = band.plane(hit), s = band.plane(steps), it = band.plane(iterations),
+         mat = band.plane(material);
+    std::span<const float> nrm[3] = {band.plane(nx), band.plane(ny), band.plane(nz)};
+    for (std::size_t i = 0; i < d.size(); ++i) {
+      const std::size_t j = at + i;
+      const float k = c[i];  // 1 for a hit (one sample per pass)
+      if (k > 0 && first_material[j] < 0) first_material[j] = mat[i];
+      hits[j] += k;
+      if (k > 0) depth_sum[j] += k * d[i], iter_sum[j] += k * it[i];
+      for (int a = 0; a < 3; ++a) normal_sum[a * n + j] += k * nrm[a][i];
+      steps_sum[j] += s[i];
+    }
+  }
+  // The averages of rows [y0, y0 + rows), as a band with the kernel's planes.
+  sdfrt::FloatImage band(int y0, int rows) const {
+    const std::size_t n = std::size_t(w) * std::size_t(h), at = std::size_t(y0) * std::size_t(w);
+    sdfrt::FloatImage b(w, rows, names);
+    const float inv = passes > 0 ? 1.0f / float(passes) : 0.0f;
+    for (std::size_t i = 0; i < b.plane_size(); ++i) {
+      const std::size_t j = at + i;
+      const float nh = hits[j];
+      b.plane(hit)[i] = nh * inv;
+      b.plane(depth)[i] = nh > 0 ? depth_sum[j] / nh : -1.0f;
+      b.plane(iterations)[i] = nh > 0 ? iter_sum[j] / nh : 0.0f;
+      b.plane(steps)[i] = steps_sum[j] * inv;
+      b.plane(material)[i] = first_material[j];
+      const float x = normal_sum[j], y = normal_sum[n + j], z = normal_sum[2 * n + j];
+      const float len = std::sqrt(x * x + y * y + z * z);
+      const float s = len > 1e-30f ? 1.0f / len : 0.0f;
+      b.plane(nx)[i] = x * s, b.plane(ny)[i] = y * s, b.plane(nz)[i] = z * s;
+    }
+    return b;
   }
 };
 
@@ -165,7 +205,9 @@ std::vector<std::string> render_offline(sdfrt::Renderer& renderer, const Offline
   const sdfrt::KernelSpec& spec = renderer.spec();
   const int w = f.width, h = f.height;
   const std::size_t pixels = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
-  const bool progressive = f.samples > 1 && pixels * 3 * sizeof(float) <= kMaxAccumulatorBytes;
+  // RGB sums, and with AOVs 8 more planes of sums (AovMean)
+  const std::size_t sums = out.aovs.empty() ? 3 : 11;
+  const bool progressive = f.samples > 1 && pixels * sums * sizeof(float) <= kMaxAccumulatorBytes;
   if (f.samples > 1 && !progressive && !out.quiet)
     std::cerr << fmt::format("note: {}x{} is too large to refine progressively; rendering all {} samples in one pass\n",
                              w, h, f.samples);
@@ -227,6 +269,8 @@ std::vector<std::string> render_offline(sdfrt::Renderer& renderer, const Offline
 
   // Progressive: pass k renders sample k of every pixel into a running mean.
   RunningMean mean(w, h, static_cast<float>(f.gamma));
+  std::optional<AovMean> aov_mean;
+  if (!out.aovs.empty()) aov_mean.emplace(spec, w, h);
   for (int pass = 0; pass < passes; ++pass) {
     frame[26] = static_cast<float>(pass);
     frame[27] = 1.0f;
@@ -252,10 +296,10 @@ std::vector<std::string> render_offline(sdfrt::Renderer& renderer, const Offline
         throw;
       }
       mean.add(band, opt.row_begin);
-      if (pass == 0) aovs.write(band);
+      if (aov_mean) aov_mean->add(band, opt.row_begin);
       progress.done += tiles_in(w, opt.row_count, tile);
     }
-    if (pass == 0) aovs.finish();
+    if (aov_mean) ++aov_mean->passes;
     if (out.keep_partial && pass + 1 < passes) {
       // Refreshed after every pass, to watch the image refine.
       auto writer = sdfrt::open_png_writer(out.beauty, w, h, {0, 1, 2}, out.bit_depth);
@@ -266,6 +310,10 @@ std::vector<std::string> render_offline(sdfrt::Renderer& renderer, const Offline
   auto beauty = sdfrt::open_png_writer(out.beauty, w, h, {0, 1, 2}, out.bit_depth);
   mean.write(*beauty, tile);
   written.push_back(beauty->finish().path);
+  if (aov_mean) {
+    for (int y0 = 0; y0 < h; y0 += tile) aovs.write(aov_mean->band(y0, std::min(tile, h - y0)));
+    aovs.finish();
+  }
   return done();
 }
 

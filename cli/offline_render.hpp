@@ -23,8 +23,11 @@ struct OfflineOutput {
   bool keep_partial = false;
 };
 
-// The AOVs --aov accepts, and the kernel planes each one reads ("hit" is
-// derived from depth: 1 where the ray hit, 0 on a miss).
+// The AOVs --aov accepts (kernel planes of the same names). With several
+// samples per pixel each is a pixel average: "hit" is the coverage (the
+// fraction of samples that hit, 0 or 1 with one sample), depth, normal
+// (normalised) and iterations the means over the samples that hit, steps
+// the mean over all, material that of the first sample that hits.
 inline const std::vector<std::string> kAovNames = {"depth", "normal", "steps", "iterations", "material", "hit"};
 
 // "<dir>/<stem>.<aov>.pfm" beside the beauty image.

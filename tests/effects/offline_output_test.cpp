@@ -9,7 +9,9 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <sstream>
+#include <tuple>
 
 #include "run_sdfc.hpp"
 
@@ -227,6 +229,82 @@ TEST_F(OfflineOutput, IterationsAov) {
   EXPECT_GT(other, 100);
   // The surface is where orbits start to escape: not every pixel runs the full count.
   EXPECT_GT(below_max, bulb / 10) << below_max << " of " << bulb;
+}
+
+// A PFM of `channels` planes as row-major top-to-bottom pixels (PFM rows run
+// bottom-to-top); empty if the header or size is not as expected.
+std::vector<float> read_pfm(const fs::path& p, int w, int h, int channels) {
+  std::string bytes = slurp(p);
+  std::string header = std::string(channels == 3 ? "PF" : "Pf") + "\n" + std::to_string(w) + " " + std::to_string(h) + "\n-1.0\n";
+  const size_t n = size_t(w) * size_t(h) * size_t(channels);
+  if (bytes.substr(0, header.size()) != header || bytes.size() != header.size() + n * sizeof(float)) return {};
+  std::vector<float> file(n), v(n);
+  std::memcpy(file.data(), bytes.data() + header.size(), n * sizeof(float));
+  for (int y = 0; y < h; ++y)
+    std::copy_n(file.begin() + long(size_t(h - 1 - y) * w * channels), size_t(w) * channels, v.begin() + long(size_t(y) * w * channels));
+  return v;
+}
+
+// With several samples the AOVs are pixel averages: "hit" is the coverage.
+// A sphere of radius 1 seen from 5 away is a disc of radius 1/sqrt(24) on the
+// image plane; each pixel's coverage must match the disc's area fraction in
+// that pixel (integrated on a fine grid here), fractional on the silhouette,
+// and a render of one sample gives only 0 and 1. The progressive render
+// (one pass per sample, averaged on the host) and the one-pass render
+// (--repeat: the kernel averages) give the same AOVs.
+TEST_F(OfflineOutput, SampledAovsArePixelAverages) {
+  const int W = 24, H = 24;
+  const std::string view = "camera: {position: [0, -5, 0], target: [0, 0, 0], fov: 45}\nscene: {sphere: {radius: 1}}\n";
+  auto render = [&](const std::string& name, const std::string& extra, const std::string& opts) {
+    std::string s = scene("render: {width: 24, height: 24, hit_epsilon: 0.01, max_steps: 4000" + extra + "}\n" + view);
+    Result r = sdfc("render " + s + " -q -o " + (dir_ / (name + ".png")).string() + " --aov hit,depth,normal " + opts);
+    EXPECT_EQ(r.code, 0) << r.err;
+    return std::make_tuple(read_pfm(dir_ / (name + ".hit.pfm"), W, H, 1), read_pfm(dir_ / (name + ".depth.pfm"), W, H, 1),
+                           read_pfm(dir_ / (name + ".normal.pfm"), W, H, 3));
+  };
+  auto [hit, depth, normal] = render("grid", ", samples: 256, sampling: grid", "");
+  auto [hit1, depth1, normal1] = render("one", "", "");
+  auto [hit_r, depth_r, normal_r] = render("once", ", samples: 256, sampling: grid", "--repeat 1");
+  auto [hit_r2, depth_r2, normal_r2] = render("r2", ", samples: 64", "");  // the default R2 pattern
+  ASSERT_FALSE(hit_r2.empty());
+  ASSERT_FALSE(hit.empty());
+  ASSERT_FALSE(hit1.empty());
+  ASSERT_FALSE(hit_r.empty());
+  ASSERT_FALSE(normal.empty());
+
+  const double tan_half = std::tan(45.0 * M_PI / 360.0), rho2 = 1.0 / 24.0;
+  int partial = 0;
+  double worst = 0;
+  for (int j = 0; j < H; ++j)
+    for (int i = 0; i < W; ++i) {
+      const int k = j * W + i, sub = 64;
+      int inside = 0;
+      for (int b = 0; b < sub; ++b)
+        for (int a = 0; a < sub; ++a) {
+          double x = (2.0 * (i + (a + 0.5) / sub) / W - 1.0) * tan_half, y = (1.0 - 2.0 * (j + (b + 0.5) / sub) / H) * tan_half;
+          inside += x * x + y * y < rho2;
+        }
+      const double area = double(inside) / (sub * sub);
+      worst = std::max(worst, std::fabs(hit[k] - area));
+      EXPECT_NEAR(hit[k], area, 0.03) << "pixel " << i << ", " << j;
+      EXPECT_NEAR(hit_r2[k], area, 0.1) << "R2, pixel " << i << ", " << j;
+      if (hit[k] > 0.05 && hit[k] < 0.95) ++partial;
+      EXPECT_TRUE(hit1[k] == 0.0f || hit1[k] == 1.0f) << hit1[k];
+      EXPECT_EQ(hit1[k] > 0, depth1[k] >= 0);
+      EXPECT_EQ(hit[k] > 0, depth[k] >= 0);
+      if (hit[k] > 0) {
+        // the mean over the samples that hit: between the nearest and farthest point of the sphere
+        EXPECT_GE(depth[k], 4.0f - 1e-3f);
+        EXPECT_LE(depth[k], 5.0f);
+        const float* n = &normal[3 * k];
+        EXPECT_NEAR(n[0] * n[0] + n[1] * n[1] + n[2] * n[2], 1.0f, 1e-4f);  // normalised mean
+      }
+      EXPECT_NEAR(hit_r[k], hit[k], 1e-6) << "pixel " << i << ", " << j;
+      EXPECT_NEAR(depth_r[k], depth[k], 1e-4 * std::max(1.0f, std::fabs(depth[k])));
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(normal_r[3 * k + c], normal[3 * k + c], 1e-4);
+    }
+  EXPECT_GT(partial, 20);  // the silhouette crosses ~40 pixels
+  std::cout << "coverage against the disc's area fraction: worst " << worst << ", " << partial << " partial pixels\n";
 }
 
 TEST_F(OfflineOutput, BadFrameOptionsAreUsageErrors) {

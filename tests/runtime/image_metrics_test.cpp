@@ -92,6 +92,46 @@ TEST(ImageMetrics, KnownErrorsAreMeasured) {
   EXPECT_GT(m.ssim, 0.5);  // a brightness shift keeps the structure
 }
 
+// Coverage AOVs (<stem>.hit.pfm, pixel averages of several samples): the mask
+// compares which side of 0.5 each pixel is on, the mean coverage difference
+// every fraction, and the errors count the pixels both cover (the fully
+// covered ones apart).
+TEST(ImageMetrics, CoverageDecidesTheMask) {
+  auto with_coverage = [](const Scene& s, const std::string& stem, auto coverage_of_column) {
+    std::string png = save(s, stem);
+    FloatImage hit(kW, kH, {"hit"});
+    for (int y = 0; y < kH; ++y)
+      for (int x = 0; x < kW; ++x) hit.plane(0)[size_t(y) * kW + x] = coverage_of_column(x);
+    write_pfm((std::filesystem::path(png).parent_path() / (stem + ".hit.pfm")).string(), hit, 0);
+    return png;
+  };
+  // Both hit columns 0-19. The reference covers columns 0-17 fully and
+  // 18-19 at 0.6 and 0.3; the test 0-16 fully, 17 at 0.5, 18-19 at 0.45, and
+  // its normals are tilted 3 degrees.
+  std::string ref = with_coverage(make(20, 1, 0, 0), "cov_ref", [](int x) {
+    return x < 18 ? 1.0f : x == 18 ? 0.6f : x == 19 ? 0.3f : 0.0f;
+  });
+  std::string test = with_coverage(make(20, 1, 3, 0), "cov_test", [](int x) {
+    return x < 17 ? 1.0f : x == 17 ? 0.5f : x < 20 ? 0.45f : 0.0f;
+  });
+  ComparisonMetrics m = compare_renders(load_render_outputs(ref), load_render_outputs(test));
+  // Column 18: covered (0.6) against not (0.45); column 17 stays covered at 0.5, 19 uncovered in both.
+  EXPECT_NEAR(m.hit_mask_disagreement_pct, 100.0 / kW, 1e-9);
+  EXPECT_NEAR(m.holes_pct, 100.0 / kW, 1e-9);
+  EXPECT_NEAR(m.coverage_diff_mean_pct, 100.0 * (0.5 + 0.15 + 0.15) / kW, 1e-4);
+  EXPECT_NEAR(m.normal_error_deg_median, 3.0, 0.01);
+  EXPECT_NEAR(m.normal_error_deg_median_interior, 3.0, 0.01);
+  EXPECT_NE(format_json(m).find("\"coverage_diff_mean_pct\""), std::string::npos);
+  EXPECT_NE(format_json(m).find("\"normal_error_deg_p99_interior\""), std::string::npos);
+  EXPECT_NE(format_table(m).find("coverage difference"), std::string::npos);
+  // Without hit AOVs the coverage is 0 or 1 from the depth: the same
+  // renders then agree on the whole mask.
+  std::filesystem::remove(std::filesystem::path(ref).parent_path() / "cov_test.hit.pfm");
+  ComparisonMetrics binary = compare_renders(load_render_outputs(ref), load_render_outputs(test));
+  EXPECT_NEAR(binary.hit_mask_disagreement_pct, 100.0 * 1 / kW, 1e-9);  // column 19: the reference's 0.3 is a miss
+  EXPECT_NEAR(binary.coverage_diff_mean_pct, 100.0 * (0.4 + 0.7) / kW, 1e-4);
+}
+
 TEST(ImageMetrics, SsimFallsWithNoiseAndSizesMustMatch) {
   Scene a = make(20, 1, 0, 0), b = a;
   std::mt19937 rng(3);

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <set>
@@ -329,8 +330,10 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
       w.line("real jitter = 0.0f;");
     }
     w.line("vec3 c = sdfc_radiance(TIME_ARG eye, rd, pixel_angle, jitter, &depth, &normal, &mat, &steps);");
-    if (aovs)
+    if (aovs) {
       w.line("iterations = SEL((real)(0.0f), scene_iterations(TIME_ARG v3_mad(eye, rd, fmax(depth, K(0.0f)))), depth >= 0.0f);");
+      w.line("real coverage = SEL((real)(0.0f), (real)(1.0f), depth >= 0.0f);");
+    }
     emit_post();
     w.line("vec3 color = c;");
   } else {
@@ -347,10 +350,25 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
       w.line("vec3 lens_right = v3_normalize(right), lens_up = v3_normalize(up);");
     }
     w.line("vec3 color = v3_splat(0.0f);");
+    w.line("// the AOVs are pixel averages over the pass's samples: hit = coverage (the fraction that");
+    w.line("// hits); depth, normal (normalised) and iterations = means over the samples that hit;");
+    w.line("// steps = mean over all; material = that of the first sample (in sample order) that hits");
+    w.line("real hits = 0.0f, depth_sum = 0.0f, steps_sum = 0.0f;");
+    w.line("vec3 normal_sum = v3_splat(0.0f);");
+    w.line("mat = (real)(-1.0f);");
+    if (aovs) w.line("real iter_sum = 0.0f;");
     w.line("for (int si = s_first; si < s_first + s_count; ++si)");
     w.open("{");
     w.line("const scalar sf = (scalar)si;");
-    w.line("real jx = fx_fract(rx + sf * 0.7548776662f), jy = fx_fract(ry + sf * 0.5698402910f);");
+    if (s.sampling == ir::MarchSettings::Sampling::Grid) {
+      const int n = std::max(1, static_cast<int>(std::lround(std::sqrt(double(s.samples)))));
+      w.line(fmt::format("// render.sampling: grid: sample si is the centre of cell (si % {0}, si / {0}) of a {0}x{0} grid", n));
+      w.line(fmt::format("real jx = (real)(((scalar)(si % {0}) + K(0.5f)) * K({1})), jy = (real)(((scalar)(si / {0}) + K(0.5f)) * K({1}));",
+                         n, lit.real(1.0 / n)));
+      w.line("(void)rx; (void)ry;");
+    } else {
+      w.line("real jx = fx_fract(rx + sf * 0.7548776662f), jy = fx_fract(ry + sf * 0.5698402910f);");
+    }
     if (s.filter == ir::MarchSettings::Filter::Tent) {
       used.insert("fx_tent");
       w.line("real px = px0 + 0.5f + fx_tent(jx), py = py0 + 0.5f + fx_tent(jy);  // tent filter, two pixels wide");
@@ -378,11 +396,24 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
     w.line("vec3 c = sdfc_radiance(TIME_ARG ro, rd, pixel_angle, jitter, &d_s, &n_s, &mat_s, &steps_s);");
     emit_post();
     w.line("color = v3_add(color, c);");
-    w.line("// the AOVs come from the first sample of the pass");
-    w.line("if (si == s_first) { depth = d_s; normal = n_s; mat = mat_s; steps = steps_s; }");
+    w.line("mask hit_s = d_s >= 0.0f;");
+    w.line("mat = SEL(mat, mat_s, hit_s & (hits == 0.0f));  // the first sample that hits");
+    w.line("hits += SEL((real)(0.0f), (real)(1.0f), hit_s);");
+    w.line("depth_sum += SEL((real)(0.0f), d_s, hit_s);");
+    w.line("normal_sum = v3_add(normal_sum, v3_select(v3_splat(0.0f), n_s, hit_s));");
+    w.line("steps_sum += steps_s;");
     if (aovs)
-      w.line("if (si == s_first) iterations = SEL((real)(0.0f), scene_iterations(TIME_ARG v3_mad(ro, rd, fmax(d_s, K(0.0f)))), d_s >= 0.0f);");
+      w.line("iter_sum += SEL((real)(0.0f), scene_iterations(TIME_ARG v3_mad(ro, rd, fmax(d_s, K(0.0f)))), hit_s);");
     w.close("}");
+    w.line("real per_hit = 1.0f / fmax(hits, K(1.0f));");
+    w.line("depth = SEL((real)(-1.0f), depth_sum * per_hit, hits > 0.0f);  // -1 marks a pixel no sample hits");
+    w.line("real n_len = sqrt(v3_dot(normal_sum, normal_sum));");
+    w.line("normal = v3_scale(normal_sum, SEL((real)(0.0f), 1.0f / fmax(n_len, K(1e-30f)), n_len > K(1e-30f)));");
+    w.line("steps = steps_sum * (1.0f / (scalar)s_count);");
+    if (aovs) {
+      w.line("iterations = iter_sum * per_hit;");
+      w.line("real coverage = hits * (1.0f / (scalar)s_count);");
+    }
     w.line("color = v3_scale(color, 1.0f / (scalar)s_count);");
   }
   used.insert("shade_encode");
@@ -395,13 +426,15 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
   w.line("STORE_PACKET(color.z, o + 2 * plane, out_stride);");
   w.line("STORE_PACKET(depth, o + 3 * plane, out_stride);");
   if (aovs) {
-    w.line("// AOVs: normal (0 on a miss), march steps, material id (-1 on a miss), fractal iterations (0 off fractals)");
+    w.line("// AOVs: normal (0 on a miss), march steps, material id (-1 on a miss), fractal iterations (0 off");
+    w.line("// fractals), hit coverage");
     w.line("STORE_PACKET(normal.x, o + 4 * plane, out_stride);");
     w.line("STORE_PACKET(normal.y, o + 5 * plane, out_stride);");
     w.line("STORE_PACKET(normal.z, o + 6 * plane, out_stride);");
     w.line("STORE_PACKET(steps, o + 7 * plane, out_stride);");
     w.line("STORE_PACKET(mat, o + 8 * plane, out_stride);");
     w.line("STORE_PACKET(iterations, o + 9 * plane, out_stride);");
+    w.line("STORE_PACKET(coverage, o + 10 * plane, out_stride);  // hit: the fraction of samples that hit");
   } else {
     w.line("(void)normal; (void)mat; (void)steps;");
   }
@@ -476,7 +509,7 @@ EmittedKernel emit_opencl(const ir::Module& m, const EmitOptions& opt) {
   k.simd_width = wd;
   k.packet_rows = rows;
   k.planes = {"r", "g", "b", "depth"};
-  if (opt.aovs) k.planes.insert(k.planes.end(), {"normal_x", "normal_y", "normal_z", "steps", "material", "iterations"});
+  if (opt.aovs) k.planes.insert(k.planes.end(), {"normal_x", "normal_y", "normal_z", "steps", "material", "iterations", "hit"});
   k.frame_floats = kFrameFloats;
   std::string before, after;
   for (const auto* f : fns) {

@@ -88,7 +88,7 @@ void read_camera(ValueReader& r, const SourceValue& v, ir::Camera& cam) {
 void read_render(ValueReader& r, const SourceValue& v, ir::MarchSettings& s) {
   MapReader m(r, v, "render", {"width", "height", "precision", "max_steps", "hit_epsilon", "max_distance",
                                "step_factor", "gamma", "normals", "lipschitz_correction", "samples", "filter",
-                               "dither", "exposure", "tone_mapping", "normal_step", "refine"});
+                               "sampling", "dither", "exposure", "tone_mapping", "normal_step", "refine"});
   s.width = m.integer("width", s.width, 1, 16384);
   s.height = m.integer("height", s.height, 1, 16384);
   s.precision = m.word("precision", "float", {"float", "double"}) == "double" ? ir::Precision::Double : ir::Precision::Float;
@@ -109,6 +109,16 @@ void read_render(ValueReader& r, const SourceValue& v, ir::MarchSettings& s) {
   s.samples = m.integer("samples", s.samples, 1, 1024);
   s.filter = m.word("filter", "box", {"box", "tent"}) == "tent" ? ir::MarchSettings::Filter::Tent
                                                                  : ir::MarchSettings::Filter::Box;
+  if (m.word("sampling", "r2", {"r2", "grid"}) == "grid") {
+    s.sampling = ir::MarchSettings::Sampling::Grid;
+    const int n = static_cast<int>(std::floor(std::sqrt(double(s.samples))));
+    if (n * n != s.samples) {
+      const SourceValue* at = v.find("samples");
+      r.sink().error(at ? at->loc : v.loc,
+                     fmt::format("render.sampling: grid needs render.samples to be a square (N x N), got {}", s.samples),
+                     fmt::format("use samples: {} or {}", n * n, (n + 1) * (n + 1)));
+    }
+  }
   s.dither = m.word("dither", "false", {"false", "true"}) == "true";
   s.exposure = m.number("exposure", s.exposure, Range::closed(-20, 20));
   std::string tm = m.word("tone_mapping", "clamp", {"clamp", "reinhard", "aces"});

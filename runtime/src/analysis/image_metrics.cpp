@@ -74,6 +74,7 @@ RenderOutputs load_render_outputs(const std::string& png_path) {
   auto beside = [&](const char* aov) { return (p.parent_path() / (p.stem().string() + "." + aov + ".pfm")).string(); };
   if (std::filesystem::exists(beside("depth"))) o.depth = read_pfm(beside("depth"), "depth");
   if (std::filesystem::exists(beside("normal"))) o.normal = read_pfm(beside("normal"), "normal");
+  if (std::filesystem::exists(beside("hit"))) o.hit = read_pfm(beside("hit"), "hit");
   return o;
 }
 
@@ -111,10 +112,25 @@ ComparisonMetrics compare_renders(const RenderOutputs& ref, const RenderOutputs&
         test.depth->height != b.height)
       throw std::invalid_argument("a depth AOV does not match its image's size");
     m.has_normal = ref.normal && test.normal;
+    auto coverage = [](const RenderOutputs& o, const FloatImage& img) {
+      std::vector<double> c(img.plane_size());
+      if (o.hit) {
+        if (o.hit->width != img.width || o.hit->height != img.height)
+          throw std::invalid_argument("a hit AOV does not match its image's size");
+        for (size_t i = 0; i < c.size(); ++i) c[i] = std::clamp(double(o.hit->plane(0)[i]), 0.0, 1.0);
+      } else {
+        for (size_t i = 0; i < c.size(); ++i) c[i] = o.depth->plane(0)[i] >= 0 ? 1.0 : 0.0;
+      }
+      return c;
+    };
+    const std::vector<double> ca = coverage(ref, a), cb = coverage(test, b);
     size_t disagree = 0, holes = 0, passed = 0;
-    std::vector<double> depth_err, normal_err;
+    double coverage_diff = 0;
+    std::vector<double> depth_err, normal_err, normal_err_interior;
     for (size_t i = 0; i < n; ++i) {
-      bool ha = da[i] >= 0, hb = db[i] >= 0;
+      coverage_diff += std::fabs(ca[i] - cb[i]);
+      // depth < 0: no sample hit (a hand-made AOV set could disagree with hit)
+      bool ha = ca[i] >= kCoveredFraction && da[i] >= 0, hb = cb[i] >= kCoveredFraction && db[i] >= 0;
       if (ha != hb) ++disagree;
       if (ha && !hb) ++holes, ++passed;
       if (!(ha && hb)) continue;
@@ -124,8 +140,14 @@ ComparisonMetrics compare_renders(const RenderOutputs& ref, const RenderOutputs&
         double dot = 0;
         for (int c = 0; c < 3; ++c) dot += double(ref.normal->plane(c)[i]) * double(test.normal->plane(c)[i]);
         normal_err.push_back(std::acos(std::clamp(dot, -1.0, 1.0)) * 180.0 / M_PI);
+        if (ca[i] >= 1.0) normal_err_interior.push_back(normal_err.back());
       }
     }
+    m.coverage_diff_mean_pct = n ? 100.0 * coverage_diff / double(n) : 0.0;
+    // NaN (null in JSON) when the reference covers no pixel fully (a sparse fractal)
+    const double none = std::numeric_limits<double>::quiet_NaN();
+    m.normal_error_deg_median_interior = normal_err_interior.empty() ? none : quantile(normal_err_interior, 0.5);
+    m.normal_error_deg_p99_interior = normal_err_interior.empty() ? none : quantile(normal_err_interior, 0.99);
     m.hit_mask_disagreement_pct = 100.0 * double(disagree) / double(n);
     m.holes_pct = 100.0 * double(holes) / double(n);
     m.passed_pct = 100.0 * double(passed) / double(n);
@@ -141,15 +163,22 @@ std::string format_table(const ComparisonMetrics& m) {
   std::string s = fmt::format("{:<32} {}\n", "size", fmt::format("{}x{}", m.width, m.height));
   if (m.has_depth) {
     s += fmt::format("{:<32} {:.4f} %\n", "hit-mask disagreement", m.hit_mask_disagreement_pct);
+    s += fmt::format("{:<32} {:.4f} %\n", "coverage difference, mean", m.coverage_diff_mean_pct);
     s += fmt::format("{:<32} {:.4f} %\n", "holes (reference hits only)", m.holes_pct);
     s += fmt::format("{:<32} {:.4f} %\n", "passed the reference surface", m.passed_pct);
     s += fmt::format("{:<32} {:.3e} / {:.3e}\n", "depth error, median / p99", m.depth_rel_error_median, m.depth_rel_error_p99);
   } else {
-    s += fmt::format("{:<32} {}\n", "hit mask, depth", "no depth AOVs (render with --aov depth,normal)");
+    s += fmt::format("{:<32} {}\n", "hit mask, depth", "no depth AOVs (render with --aov depth,normal,hit)");
   }
-  if (m.has_normal)
+  if (m.has_normal) {
     s += fmt::format("{:<32} {:.3f} / {:.3f} deg\n", "normal error, median / p99", m.normal_error_deg_median,
                      m.normal_error_deg_p99);
+    if (std::isnan(m.normal_error_deg_p99_interior))
+      s += fmt::format("{:<32} {}\n", "  where the reference covers all", "no pixel is fully covered");
+    else
+      s += fmt::format("{:<32} {:.3f} / {:.3f} deg\n", "  where the reference covers all", m.normal_error_deg_median_interior,
+                       m.normal_error_deg_p99_interior);
+  }
   s += fmt::format("{:<32} {:.4f} %\n", fmt::format("pixels differing > {:.1f}/255", m.pixel_threshold * 255),
                    m.pixels_differing_pct);
   s += fmt::format("{:<32} {:.2f} dB\n", "PSNR", m.psnr_db);
@@ -167,10 +196,13 @@ std::string format_json(const ComparisonMetrics& m) {
     s += fmt::format(", \"hit_mask_disagreement_pct\": {}, \"depth_rel_error_median\": {}, \"depth_rel_error_p99\": {}",
                      num(m.hit_mask_disagreement_pct), num(m.depth_rel_error_median), num(m.depth_rel_error_p99));
   if (m.has_depth)
-    s += fmt::format(", \"holes_pct\": {}, \"passed_pct\": {}", num(m.holes_pct), num(m.passed_pct));
+    s += fmt::format(", \"coverage_diff_mean_pct\": {}, \"holes_pct\": {}, \"passed_pct\": {}",
+                     num(m.coverage_diff_mean_pct), num(m.holes_pct), num(m.passed_pct));
   if (m.has_normal)
-    s += fmt::format(", \"normal_error_deg_median\": {}, \"normal_error_deg_p99\": {}", num(m.normal_error_deg_median),
-                     num(m.normal_error_deg_p99));
+    s += fmt::format(", \"normal_error_deg_median\": {}, \"normal_error_deg_p99\": {}, "
+                     "\"normal_error_deg_median_interior\": {}, \"normal_error_deg_p99_interior\": {}",
+                     num(m.normal_error_deg_median), num(m.normal_error_deg_p99),
+                     num(m.normal_error_deg_median_interior), num(m.normal_error_deg_p99_interior));
   return s + "}\n";
 }
 

@@ -61,6 +61,9 @@ struct MarchSettings {
   // (box: one pixel wide; tent: two pixels wide, importance-sampled).
   int samples = 1;
   enum class Filter { Box, Tent } filter = Filter::Box;
+  // Where the samples go: the R2 sequence rotated per pixel, or a square
+  // stratified grid of cell centres (samples must then be a square, N x N).
+  enum class Sampling { R2, Grid } sampling = Sampling::R2;
   bool dither = false;  // jitter the first march step against banding
   // Exposure in stops, then the tone curve, then gamma.
   double exposure = 0;
@@ -70,13 +73,22 @@ struct MarchSettings {
 // The reference render (sdfc render --reference, issue 6): the same view,
 // slow but trustworthy: double precision, a small hit epsilon (in pixel
 // footprints), 20000 steps of half the distance, every hit bisected.
-// It answers: which surface does the pixel centre see, and its normal at
+// With grid > 1 it traces a grid x grid stratified grid of rays per pixel
+// (box filter), so its AOVs are pixel averages: coverage, mean normal and
+// depth (sdfc render --reference-samples; 1 ray = the pixel centre).
+// It answers: which surface does the pixel see, and its normal at
 // the pixel's scale - central differences in double with the render's
 // default step (0.5 px, no world-unit floor) at the bisected hit, so the
 // normal is the one a render resolves, not sub-pixel detail (dual normals
 // stay: they are exact already).
 inline constexpr double kReferenceHitEpsilon = 0.01;  // px; why: docs/accuracy.md
-inline void make_reference(MarchSettings& s, double hit_epsilon = kReferenceHitEpsilon) {
+inline constexpr int kReferenceGrid = 8;  // 8 x 8 rays per pixel; why: docs/accuracy.md
+inline void make_reference(MarchSettings& s, double hit_epsilon = kReferenceHitEpsilon, int grid = 1) {
+  if (grid > 1) {
+    s.samples = grid * grid;
+    s.sampling = MarchSettings::Sampling::Grid;
+    s.filter = MarchSettings::Filter::Box;
+  }
   s.precision = Precision::Double;
   s.hit_epsilon = hit_epsilon;
   s.max_steps = 20000;
