@@ -129,56 +129,10 @@ FloatImage Renderer::render(const std::vector<float>& frame, int width, int heig
   RenderStats stats;
   const int total = static_cast<int>(plan.tiles.size());
   if (options.progress) options.progress(0, total);
+  std::vector<float> host(max_floats);
 
-  // Tiles overlap with the host: tile t's kernel and its non-blocking read
-  // are queued before the host waits for tile t-1's read and copies it, so
-  // the device never idles while the host copies (about 3 % of a 15-tile
-  // frame when every read was blocking). The queue is in order, so one
-  // device buffer serves both; the host needs one buffer per tile in flight.
-  struct InFlight {
-    int tile = -1;
-    int stride = 0;
-    int rows = 0;
-    EventHandle kernel_done;
-    EventHandle read_done;
-  };
-  std::vector<float> host[2] = {std::vector<float>(max_floats), std::vector<float>(max_floats)};
-  InFlight flight[2];
-  // A read still queued into host[] must finish before host[] is freed,
-  // whatever leaves this function (cancel, an OpenCL error).
-  struct DrainOnExit {
-    cl_command_queue queue;
-    ~DrainOnExit() { clFinish(queue); }
-  } drain{device_->queue()};
-
-  auto land = [&](InFlight& f) {
-    if (f.tile < 0) return;
-    cl_event read = f.read_done.get();
-    check_cl(clWaitForEvents(1, &read), "clEnqueueReadBuffer(output tile)");
-    stats.kernel_ms += event_ms(f.kernel_done.get());
-    const Tile& tile = plan.tiles[static_cast<std::size_t>(f.tile)];
-    const std::vector<float>& src_buf = host[f.tile % 2];
-    // Drop the padding lanes while copying rows into the image.
-    for (std::size_t k = 0; k < planes; ++k) {
-      auto dst = image.plane(static_cast<int>(k));
-      for (int row = 0; row < tile.height; ++row) {
-        const float* src =
-            src_buf.data() + (k * static_cast<std::size_t>(f.rows) + static_cast<std::size_t>(row)) *
-                                 static_cast<std::size_t>(f.stride);
-        float* to = dst.data() + static_cast<std::size_t>(tile.y0 + row) * static_cast<std::size_t>(width) +
-                    static_cast<std::size_t>(tile.x0);
-        std::memcpy(to, src, static_cast<std::size_t>(tile.width) * sizeof(float));
-      }
-    }
-    const int landed = f.tile;
-    f = InFlight{};
-    if (options.progress) options.progress(landed + 1, total);
-  };
-
-  const auto local = launch_local_size(device_->info().type);
   for (int t = 0; t < total; ++t) {
     if (options.cancel && options.cancel->load()) {
-      land(flight[(t + 1) % 2]);  // the tile already rendered still counts
       if (options.partial) *options.partial = std::move(image);
       throw Cancelled();
     }
@@ -199,27 +153,36 @@ FloatImage Renderer::render(const std::vector<float>& frame, int width, int heig
 
     const std::size_t global[2] = {static_cast<std::size_t>(groups_x),
                                    static_cast<std::size_t>(groups_y)};
-    InFlight& f = flight[t % 2];
-    f.tile = t;
-    f.stride = stride;
-    f.rows = rows;
-    cl_event raw_kernel = nullptr;
+    const auto local = launch_local_size(device_->info().type);
+    cl_event raw_event = nullptr;
     check_cl(clEnqueueNDRangeKernel(device_->queue(), kernel.get(), 2, nullptr, global,
-                                    local ? local->data() : nullptr, 0, nullptr, &raw_kernel),
+                                    local ? local->data() : nullptr, 0,
+                                    nullptr, &raw_event),
              fmt::format("clEnqueueNDRangeKernel({}, tile {}x{} at {},{})", kernel.name(),
                          tile.width, tile.height, tile.x0, tile.y0));
-    f.kernel_done = EventHandle(raw_kernel);
+    EventHandle event(raw_event);
     const std::size_t tile_floats =
         planes * static_cast<std::size_t>(stride) * static_cast<std::size_t>(rows);
-    cl_event raw_read = nullptr;
-    check_cl(clEnqueueReadBuffer(device_->queue(), out, CL_FALSE, 0, tile_floats * sizeof(float),
-                                 host[t % 2].data(), 0, nullptr, &raw_read),
+    // Blocking read on an in-order queue also waits for the kernel.
+    check_cl(clEnqueueReadBuffer(device_->queue(), out, CL_TRUE, 0, tile_floats * sizeof(float),
+                                 host.data(), 0, nullptr, nullptr),
              "clEnqueueReadBuffer(output tile)");
-    f.read_done = EventHandle(raw_read);
-    clFlush(device_->queue());  // start it now; the host copies the previous tile meanwhile
-    land(flight[(t + 1) % 2]);
+    stats.kernel_ms += event_ms(event.get());
+
+    // Drop the padding lanes while copying rows into the image.
+    for (std::size_t k = 0; k < planes; ++k) {
+      auto dst = image.plane(static_cast<int>(k));
+      for (int row = 0; row < tile.height; ++row) {
+        const float* src =
+            host.data() + (k * static_cast<std::size_t>(rows) + static_cast<std::size_t>(row)) *
+                              static_cast<std::size_t>(stride);
+        float* to = dst.data() + static_cast<std::size_t>(tile.y0 + row) * static_cast<std::size_t>(width) +
+                    static_cast<std::size_t>(tile.x0);
+        std::memcpy(to, src, static_cast<std::size_t>(tile.width) * sizeof(float));
+      }
+    }
+    if (options.progress) options.progress(t + 1, total);
   }
-  land(flight[(total - 1) % 2]);
 
   stats.tiles = total;
   stats.total_ms = ms_between(start, std::chrono::steady_clock::now());
