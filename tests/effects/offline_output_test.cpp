@@ -51,6 +51,27 @@ std::vector<unsigned char> load_rgb8(const fs::path& p, int* w, int* h) {
   return v;
 }
 
+// How many times a render's stderr says a kernel was built.
+size_t kernel_builds(const std::string& err) {
+  size_t builds = 0;
+  for (size_t at = err.find("kernel built"); at != std::string::npos; at = err.find("kernel built", at + 1)) ++builds;
+  return builds;
+}
+
+// Frames 0..2 of a sequence written as DIR/f_0N.png: each must load and
+// differ from the other two.
+void expect_three_different_frames(const fs::path& dir) {
+  std::vector<std::vector<unsigned char>> frames;
+  for (int i = 0; i < 3; ++i) {
+    int w = 0, h = 0;
+    frames.push_back(load_rgb8(dir / ("f_0" + std::to_string(i) + ".png"), &w, &h));
+    ASSERT_FALSE(frames.back().empty()) << i;
+  }
+  EXPECT_NE(frames[0], frames[1]);
+  EXPECT_NE(frames[1], frames[2]);
+  EXPECT_NE(frames[0], frames[2]);
+}
+
 TEST_F(OfflineOutput, AovsBesideASixteenBitPng) {
   std::string s = scene("render: {width: 40, height: 30}\ncamera: {position: [0, -5, 0], target: [0, 0, 0]}\n"
                         "scene: {sphere: {radius: 1}}\n");
@@ -109,19 +130,8 @@ TEST_F(OfflineOutput, SequenceOfThreeFramesFromOneBuild) {
       "scene:\n  union:\n    - plane: {}\n    - box: {}\n      translate: [0.3, 0, 0.5]\n");
   Result r = sdfc("render " + s + " --frames 0:2 --fps 1 -o " + (dir_ / "seq" / "f_%02d.png").string());
   ASSERT_EQ(r.code, 0) << r.err;
-  // One kernel build for all frames.
-  size_t builds = 0;
-  for (size_t at = r.err.find("kernel built"); at != std::string::npos; at = r.err.find("kernel built", at + 1)) ++builds;
-  EXPECT_EQ(builds, 1u) << r.err;
-  std::vector<std::vector<unsigned char>> frames;
-  for (int i = 0; i < 3; ++i) {
-    int w, h;
-    frames.push_back(load_rgb8(dir_ / "seq" / ("f_0" + std::to_string(i) + ".png"), &w, &h));
-    ASSERT_FALSE(frames.back().empty()) << i;
-  }
-  EXPECT_NE(frames[0], frames[1]);
-  EXPECT_NE(frames[1], frames[2]);
-  EXPECT_NE(frames[0], frames[2]);
+  EXPECT_EQ(kernel_builds(r.err), 1u) << r.err;  // one kernel build for all frames
+  expect_three_different_frames(dir_ / "seq");
 }
 
 // Animated scene values: three frames, three different images, one build;
@@ -136,18 +146,8 @@ TEST_F(OfflineOutput, AnimatedValuesRenderEveryFrameFromOneBuild) {
       "    - {mandelbulb: {power: \"7 + sin(time)\", iterations: 6}, scale: 0.5, translate: [1.3, 0, 0.6]}\n");
   Result r = sdfc("render " + s + " --frames 0:2 --fps 1 -o " + (dir_ / "seq" / "f_%02d.png").string());
   ASSERT_EQ(r.code, 0) << r.err;
-  size_t builds = 0;
-  for (size_t at = r.err.find("kernel built"); at != std::string::npos; at = r.err.find("kernel built", at + 1)) ++builds;
-  EXPECT_EQ(builds, 1u) << r.err;
-  std::vector<std::vector<unsigned char>> frames;
-  int w = 0, h = 0;
-  for (int i = 0; i < 3; ++i) {
-    frames.push_back(load_rgb8(dir_ / "seq" / ("f_0" + std::to_string(i) + ".png"), &w, &h));
-    ASSERT_FALSE(frames.back().empty()) << i;
-  }
-  EXPECT_NE(frames[0], frames[1]);
-  EXPECT_NE(frames[1], frames[2]);
-  EXPECT_NE(frames[0], frames[2]);
+  EXPECT_EQ(kernel_builds(r.err), 1u) << r.err;
+  expect_three_different_frames(dir_ / "seq");
   // The same scene at time 1, written out (the bulb's power, 7 + sin(1), takes the trig
   // formula, so the bulb is left out of this comparison).
   std::string animated = scene(head +
@@ -160,7 +160,7 @@ TEST_F(OfflineOutput, AnimatedValuesRenderEveryFrameFromOneBuild) {
       "    - {sphere: {radius: 0.5}, translate: [0, 0, 0.6]}\n"
       "    - {box: {size: [0.5, 0.5, 0.5]}, rotate: {axis: [0, 0, 1], degrees: 30}, translate: [-1.2, 0, 0.3]}\n");
   ASSERT_EQ(sdfc("render " + fixed + " -q -o " + (dir_ / "fixed.png").string()).code, 0);
-  int w2, h2;
+  int w = 0, h = 0, w2, h2;
   auto a = load_rgb8(dir_ / "a_1.png", &w, &h), b = load_rgb8(dir_ / "fixed.png", &w2, &h2);
   ASSERT_EQ(a.size(), b.size());
   ASSERT_FALSE(a.empty());
@@ -185,9 +185,7 @@ TEST_F(OfflineOutput, AnimatedLightsAndFog) {
                         "scene: {union: [{plane: {}}, {sphere: {radius: 0.5}, translate: [0, 0, 0.5]}]}\n");
   Result r = sdfc("render " + s + " --frames 0:1 --fps 1 -o " + (dir_ / "l_%d.png").string());
   ASSERT_EQ(r.code, 0) << r.err;
-  size_t builds = 0;
-  for (size_t at = r.err.find("kernel built"); at != std::string::npos; at = r.err.find("kernel built", at + 1)) ++builds;
-  EXPECT_EQ(builds, 1u) << r.err;
+  EXPECT_EQ(kernel_builds(r.err), 1u) << r.err;
   int w, h;
   auto a = load_rgb8(dir_ / "l_0.png", &w, &h), b = load_rgb8(dir_ / "l_1.png", &w, &h);
   ASSERT_FALSE(a.empty());
