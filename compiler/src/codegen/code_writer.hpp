@@ -42,14 +42,6 @@ inline std::string param(const ir::Node& n, size_t i, const Literals& lit) {
   return animated(n.animation(i), n.params[i], lit);
 }
 
-// Does the kernel need the frame time (animated geometry, lights or fog)?
-inline bool uses_time(const ir::Module& m) {
-  if (m.graph->animated(m.root) || m.plan.effects.fog.density_anim) return true;
-  for (const auto& l : m.plan.lights)
-    if (l.intensity_anim || l.position_anim[0] || l.position_anim[1] || l.position_anim[2]) return true;
-  return false;
-}
-
 // Parameters i, i+1, i+2 as a vec3.
 inline std::string param3(const ir::Node& n, size_t i, const Literals& lit) {
   if (!n.animation(i) && !n.animation(i + 1) && !n.animation(i + 2))

@@ -16,7 +16,6 @@
 #include "gradient_emitter.hpp"
 #include "scene_emitter.hpp"
 #include "sdfc/codegen/stdlib_manifest.hpp"
-#include "sdfc/ir/fractal_math.hpp"
 #include "sdfc/ir/printer.hpp"
 #include "shading_emitter.hpp"
 
@@ -27,52 +26,11 @@ namespace {
 using detail::CodeWriter;
 using detail::Literals;
 
-// The material id of every hit when the whole scene carries one material
-// (the root, looking through bounding boxes, is a material node and no other
-// material node is reachable): then the hit needs no scene_dist_mat call.
-std::optional<double> uniform_material(const ir::Module& m) {
-  const ir::Graph& g = *m.graph;
-  ir::NodeId id = m.root;
-  while (g.node(id).kind == ir::Kind::Bounded) id = g.node(id).children[0];
-  if (g.node(id).kind != ir::Kind::Material) return std::nullopt;
-  int materials = 0;
-  for (ir::NodeId n : g.postorder(m.root)) materials += g.node(n).kind == ir::Kind::Material;
-  if (materials != 1) return std::nullopt;
-  return g.node(id).params[0];
-}
-
-// Where rays march: the scene's inferred bounds padded by 1% of their size
-// plus a little, since the hit test accepts points up to an epsilon outside
-// the surface; and for a lone Mandelbulb (through bounding boxes and its
-// material) the ball of its set radius, padded the same way, which cuts the
-// box's corners off primary and shadow rays. None for an unbounded scene.
-std::optional<detail::RayBounds> march_bounds(const ir::Module& m) {
-  const ir::Graph& g = *m.graph;
-  const ir::Props& root = g.node(m.root).props;
-  if (!root.bounds.finite()) return std::nullopt;
-  double ext = 0;
-  for (int i = 0; i < 3; ++i) ext = std::max(ext, root.bounds.hi[i] - root.bounds.lo[i]);
-  detail::RayBounds b;
-  b.box = root.bounds.padded(0.01 * ext + 1e-3);
-  ir::NodeId id = m.root;
-  while (g.node(id).kind == ir::Kind::Bounded || g.node(id).kind == ir::Kind::Material) id = g.node(id).children[0];
-  const ir::Node& n = g.node(id);
-  double radius = 0;
-  if (n.kind == ir::Kind::Mandelbulb) radius = ir::mandelbulb_set_radius(n.params[0]);
-  if (n.kind == ir::Kind::Juliabulb)
-    radius = ir::julia_set_radius(n.params[0], std::sqrt(n.params[3] * n.params[3] + n.params[4] * n.params[4] +
-                                                         n.params[5] * n.params[5]));
-  if (radius > 0) {
-    b.has_sphere = true;
-    b.radius = radius * 1.01 + 1e-3;
-  }
-  return b;
-}
-
 // One ray segment: bounds, march, shading at the hit, background on a miss,
 // and the effects that belong to a segment (AO, glow, fog). The primary ray
 // and every reflection bounce run through it.
-std::string segment_function(const ir::Module& m, const Literals& lit, std::set<std::string>& used, bool blended) {
+std::string segment_function(const ir::Module& m, const Literals& lit, std::set<std::string>& used) {
+  const bool blended = m.analyses.material_blend;
   const ir::MarchSettings& s = m.plan.march;
   const ir::Effects& fx = m.plan.effects;
   bool any_shadows = false;
@@ -85,7 +43,7 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
   w.line(fmt::format("                  real* t_out, mask* hit_out, vec3* n_out, real* mat_out, real* steps_out{})",
                      refl_out ? ", real* refl_out" : ""));
   w.open("{");
-  if (auto bounds = march_bounds(m)) {
+  if (const auto& bounds = m.analyses.ray_bounds) {
     const ir::Box3& b = bounds->box;
     used.insert("ray_box");
     w.line("// march only where the ray crosses the scene's bounds (inferred from the IR)");
@@ -158,16 +116,14 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
     w.line("mat_record look;  // the materials mixed across smooth blends");
     w.line("id = scene_material(TIME_ARG pos, &look);");
     if (refl_out) w.line("refl = SEL(refl, look.reflectivity, hit);");
-  } else if (auto uni = uniform_material(m)) {
+  } else if (const auto& uni = m.analyses.uniform_material) {
     w.line(fmt::format("real id = {};  // the scene's one material: no distance evaluation needed", lit.typed(*uni)));
   } else {
     w.line("real id;");
     w.line("(void)scene_dist_mat(TIME_ARG pos, &id);");
   }
   w.line("mat = SEL(mat, id, hit);");
-  bool traps = false;
-  for (const auto& md : m.plan.materials) traps = traps || !md.trap_palette.empty();
-  if (traps && !blended) {
+  if (m.analyses.orbit_traps && !blended) {
     w.line("real trap = scene_trap(TIME_ARG pos);  // orbit-trap colour, once per hit");
     extra += ", trap";
   }
@@ -223,7 +179,8 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
 // The colour seen along one camera ray: the primary segment and, with
 // effects.reflections, a bounded loop of mirror bounces weighted by
 // Fresnel-Schlick (no recursion in OpenCL C).
-std::string radiance_function(const ir::Module& m, std::set<std::string>& used, bool blended) {
+std::string radiance_function(const ir::Module& m, std::set<std::string>& used) {
+  const bool blended = m.analyses.material_blend;
   const int depth = m.plan.effects.reflections.depth;
   const bool glow = m.plan.effects.glow.enabled;
   CodeWriter w;
@@ -293,7 +250,7 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
   w.line("vec3 eye = FRAME3(0), forward = FRAME3(6), right = FRAME3(12), up = FRAME3(18);");
   w.line("#undef FRAME3");
   w.line("const scalar pixel_angle = (scalar)frame[24];");
-  if (detail::uses_time(m)) w.line("const scalar time = (scalar)frame[25];  // the scene is animated");
+  if (m.analyses.uses_time) w.line("const scalar time = (scalar)frame[25];  // the scene is animated");
   w.line(aovs ? "real depth, mat, steps, iterations;" : "real depth, mat, steps;");
   w.line("vec3 normal;");
   std::string post;  // per-sample exposure and tone curve
@@ -490,19 +447,19 @@ EmittedKernel emit_opencl(const ir::Module& m, const EmitOptions& opt) {
     throw std::invalid_argument(fmt::format("packet rows must be a power of two dividing the SIMD width {}, not {}", wd, rows));
   if (m.root == ir::kNoNode || !m.graph->node(m.root).props.known)
     throw std::logic_error("emit_opencl needs a module after infer_properties");
+  if (!m.analyses.known) throw std::logic_error("emit_opencl needs a module after the analyse pass");
+  const ir::Analyses& facts = m.analyses;
   Literals lit(m.plan.march.precision);
   std::set<std::string> used;
   std::string scene = detail::emit_scene_functions(m, lit, used);
   if (opt.aovs) scene += "\n" + detail::emit_scene_iterations(m, lit, used);
   if (m.plan.march.normals == ir::NormalMethod::Dual) scene += "\n" + detail::emit_scene_gradient(m, lit, used);
-  std::optional<detail::RayBounds> bounds = march_bounds(m);
-  const bool blended = detail::needs_material_blend(m);
-  std::string shading = detail::emit_shading(m.plan, lit, bounds ? &*bounds : nullptr, used, blended);
-  if (blended) shading += "\n" + detail::emit_scene_material(m, lit, used);
-  std::string kernel = segment_function(m, lit, used, blended) + "\n" + radiance_function(m, used, blended) + "\n" +
+  std::string shading = detail::emit_shading(m.plan, facts, lit, used);
+  if (facts.material_blend) shading += "\n" + detail::emit_scene_material(m, lit, used);
+  std::string kernel = segment_function(m, lit, used) + "\n" + radiance_function(m, used) + "\n" +
                        render_kernel(m, lit, used, opt.aovs);
-  if (opt.probe_kernel) kernel += "\n" + probe_kernel(detail::uses_time(m));
-  if (opt.probe_kernel && blended) kernel += "\n" + probe_material_kernel(detail::uses_time(m));
+  if (opt.probe_kernel) kernel += "\n" + probe_kernel(facts.uses_time);
+  if (opt.probe_kernel && facts.material_blend) kernel += "\n" + probe_material_kernel(facts.uses_time);
 
   auto fns = StdlibManifest::instance().closure({used.begin(), used.end()});
   EmittedKernel k;
@@ -524,7 +481,7 @@ EmittedKernel emit_opencl(const ir::Module& m, const EmitOptions& opt) {
                      ir::count_nodes(m));
   src += "// stdlib functions:";
   for (const auto& n : k.stdlib_functions) src += " " + n;
-  src += "\n\n" + detail::prelude(wd, rows, m.plan.march.precision, detail::uses_time(m));
+  src += "\n\n" + detail::prelude(wd, rows, m.plan.march.precision, facts.uses_time);
   src += "\n// ---- stdlib ----" + before + "\n";
   src += scene + "\n";
   if (!after.empty()) src += "// ---- stdlib that calls the scene ----" + after + "\n";

@@ -7,11 +7,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 
 #include "catalogue_emitter.hpp"
 #include "fractal_emitter.hpp"
 #include "sdfc/expr/expr.hpp"
+#include "sdfc/ir/analyses.hpp"
 
 namespace sdfc::codegen::detail {
 
@@ -32,19 +32,6 @@ Value with_d(Value v, std::string d) {
   return v;
 }
 
-// Smooth blends whose children's materials are mixed by the blend weight.
-bool smooth_kind(const ir::Node& n) {
-  switch (n.kind) {
-    case Kind::SmoothUnion:
-    case Kind::SmoothIntersection:
-    case Kind::SmoothDifference: return true;
-    case Kind::BlendUnion:
-    case Kind::BlendIntersection:
-    case Kind::BlendDifference: return n.params[0] < 2;  // cubic, exponential
-    default: return false;
-  }
-}
-
 class SceneEmitter {
  public:
   // trap: emit scene_trap instead, where the tracked value is the orbit
@@ -63,6 +50,7 @@ class SceneEmitter {
         blend_(blend),
         iterations_(iterations),
         used_(used),
+        orbit_traps_(m.analyses.orbit_traps),
         file_(m.source_name) {
     if (trap || blend) find_iteration_fractals(m, m.root, 0);
   }
@@ -136,8 +124,7 @@ class SceneEmitter {
   // trap (0 for geometry without one), so blends mix finished colours.
   std::string record(const ir::Node& n) {
     const ir::MaterialDef& md = plan_.materials.at(size_t(cur_mat_));
-    bool traps = false;
-    for (const auto& m : plan_.materials) traps = traps || !m.trap_palette.empty();
+    const bool traps = orbit_traps_;
     std::string rec = var("r");
     w_.line(fmt::format("mat_record {};  // material {} '{}'", rec, cur_mat_, md.name));
     std::string trap;
@@ -413,7 +400,7 @@ class SceneEmitter {
   void blend_record(const ir::Node& n, const std::string& rec, const std::string& d, const Value& k) {
     bool uni = n.kind == Kind::Union || n.kind == Kind::SmoothUnion || n.kind == Kind::BlendUnion;
     bool inter = n.kind == Kind::Intersection || n.kind == Kind::SmoothIntersection || n.kind == Kind::BlendIntersection;
-    if (!smooth_kind(n)) {
+    if (!ir::mixes_materials(n)) {
       if (uni || inter)
         w_.line(fmt::format("{} = mat_select({}, {}, {} {} {});", rec, rec, k.rec, k.d, uni ? "<" : ">", d));
       return;
@@ -512,51 +499,12 @@ class SceneEmitter {
   std::set<NodeId> iteration_;
   bool iterations_;
   std::set<std::string>& used_;
+  bool orbit_traps_;
   std::string file_;
   CodeWriter w_;
 };
 
-// The materials a subtree shows, as keys: the material id, or for a
-// material with an orbit-trap palette one key per leaf (each leaf has its own
-// trap, so two leaves of one such material still differ). Sets `blend` when
-// a smooth blend's children show more than one key.
-class BlendFinder {
- public:
-  explicit BlendFinder(const ir::Module& m) : g_(*m.graph), plan_(m.plan) {}
-  bool found(NodeId root) {
-    keys(root, 0);
-    return blend_;
-  }
-
- private:
-  std::set<long> keys(NodeId id, double mat) {
-    auto memo = memo_.find({id, mat});
-    if (memo != memo_.end()) return memo->second;
-    const ir::Node& n = g_.node(id);
-    std::set<long> out;
-    if (n.kind == Kind::Material) mat = n.params[0];
-    if (n.children.empty()) {
-      bool trap = !plan_.materials.at(size_t(mat)).trap_palette.empty();
-      out.insert(trap ? -1 - long(id) : long(mat));
-    }
-    for (NodeId c : n.children) {
-      std::set<long> k = keys(c, mat);
-      out.insert(k.begin(), k.end());
-    }
-    if (smooth_kind(n) && out.size() > 1) blend_ = true;
-    memo_.emplace(std::make_pair(id, mat), out);
-    return out;
-  }
-
-  const ir::Graph& g_;
-  const ir::RenderPlan& plan_;
-  bool blend_ = false;
-  std::map<std::pair<NodeId, double>, std::set<long>> memo_;
-};
-
 }  // namespace
-
-bool needs_material_blend(const ir::Module& m) { return BlendFinder(m).found(m.root); }
 
 std::string emit_scene_material(const ir::Module& m, const Literals& lit, std::set<std::string>& used) {
   std::string out = "// ---- scene material: evaluated once per hit; smooth blends mix their children's materials ----\n";
@@ -574,9 +522,7 @@ std::string emit_scene_functions(const ir::Module& m, const Literals& lit, std::
   out += SceneEmitter(m, lit, false, used).function(m.root);
   out += "\n// ---- scene distance with material: evaluated once per hit ----\n";
   out += SceneEmitter(m, lit, true, used).function(m.root);
-  bool traps = false;
-  for (const auto& md : m.plan.materials) traps = traps || !md.trap_palette.empty();
-  if (traps && !needs_material_blend(m)) {  // with blends, scene_material applies the traps
+  if (m.analyses.orbit_traps && !m.analyses.material_blend) {  // with blends, scene_material applies the traps
     out += "\n// ---- orbit trap of the nearest fractal: evaluated once per hit, for orbit-trap materials ----\n";
     out += SceneEmitter(m, lit, false, used, true).function(m.root);
   }

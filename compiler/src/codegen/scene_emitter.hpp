@@ -11,10 +11,6 @@ namespace sdfc::codegen::detail {
 // call to `used`.
 std::string emit_scene_functions(const ir::Module& m, const Literals& lit, std::set<std::string>& used);
 
-// True when a smooth blend (polynomial, cubic or exponential) joins children
-// that show different materials; only then does the kernel mix materials.
-bool needs_material_blend(const ir::Module& m);
-
 // `real scene_material(vec3 p, mat_record* out)`: the blended material at p
 // and the nearest material's id. Calls material_of, so it goes after the
 // shading functions.

@@ -32,7 +32,7 @@ void emit_trap_palette(CodeWriter& w, const Literals& lit, const ir::MaterialDef
 // With the scene's bounds, the march stops where the shadow ray leaves them:
 // nothing beyond can block the light.
 std::string shadow_call(const ir::Light& l, const std::string& to_light, std::string tmax, const Literals& lit,
-                        const RayBounds* bounds, std::set<std::string>& used) {
+                        const ir::RayBounds* bounds, std::set<std::string>& used) {
   if (l.shadows == ir::Light::Shadows::None) return "";
   if (bounds) {
     used.insert("ray_box_exit");
@@ -57,12 +57,13 @@ std::string shadow_call(const ir::Light& l, const std::string& to_light, std::st
 
 }  // namespace
 
-std::string emit_shading(const ir::RenderPlan& plan, const Literals& lit, const RayBounds* bounds, std::set<std::string>& used,
-                         bool blended) {
+std::string emit_shading(const ir::RenderPlan& plan, const ir::Analyses& facts, const Literals& lit,
+                         std::set<std::string>& used) {
+  const bool blended = facts.material_blend;
+  const ir::RayBounds* bounds = facts.ray_bounds ? &*facts.ray_bounds : nullptr;
   CodeWriter w;
   const auto& mats = plan.materials;
-  bool traps = false;  // any orbit-trap material: the trap value comes along
-  for (const auto& md : mats) traps = traps || !md.trap_palette.empty();
+  const bool traps = facts.orbit_traps;  // any orbit-trap material: the trap value comes along
   std::string trap_param = traps ? ", real trap" : "";
   w.line("// ---- materials: id -> albedo, specular, shininess ----");
   w.line("void material_of(real id, vec3* albedo, real* specular, real* shininess" + trap_param + ")");

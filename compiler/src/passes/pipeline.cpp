@@ -13,6 +13,7 @@ const std::vector<PassInfo>& pipeline() {
       {"cse", cse},
       {"eliminate_dead", eliminate_dead},
       {"infer_properties", infer_properties},
+      {"analyse", analyse},
       {"insert_bounding_volumes", insert_bounding_volumes},
   };
   return list;

@@ -2,6 +2,7 @@
 #include <memory>
 #include <string>
 
+#include "sdfc/ir/analyses.hpp"
 #include "sdfc/ir/graph.hpp"
 #include "sdfc/ir/render_plan.hpp"
 
@@ -13,6 +14,7 @@ struct Module {
   NodeId root = kNoNode;
   RenderPlan plan;
   std::string source_name;  // the scene file, for comments in the kernel
+  Analyses analyses;        // recorded by the analyse pass, read by the emitters
 };
 
 }  // namespace sdfc::ir

@@ -15,6 +15,7 @@ ir::Module fold_constants(ir::Module m);      // merge/remove transforms, collap
 ir::Module canonicalise(ir::Module m);        // flatten nested unions, sort commutative children, transforms outward
 ir::Module cse(ir::Module m);                 // rebuild through the hash-consing builder, drop unreachable nodes
 ir::Module infer_properties(ir::Module m);    // bounds, distance class, Lipschitz constant, cost
+ir::Module analyse(ir::Module m);             // what the emitters need: time, blends, traps, ray bounds
 ir::Module insert_bounding_volumes(ir::Module m);  // box tests in front of expensive subtrees
 ir::Module eliminate_dead(ir::Module m);      // unused materials, dark lights
 

@@ -1,0 +1,45 @@
+#pragma once
+// Facts about a whole module that the emitters need, recorded once by the
+// `analyse` pass (passes/analyse.cpp) so no emitter derives them again.
+#include <optional>
+
+#include "sdfc/ir/graph.hpp"
+#include "sdfc/ir/render_plan.hpp"
+
+namespace sdfc::ir {
+
+// Where rays can meet the scene: its padded bounding box and, when the
+// compiler knows one (a lone Mandelbulb or Juliabulb), a tighter ball.
+struct RayBounds {
+  Box3 box;
+  bool has_sphere = false;
+  Vec3d center{0, 0, 0};
+  double radius = 0;
+};
+
+struct Analyses {
+  bool known = false;           // the analyse pass has run
+  bool uses_time = false;       // animated geometry, lights or fog: the kernel reads the frame time
+  bool material_blend = false;  // a smooth blend joins children that show different materials
+  bool orbit_traps = false;     // some material colours by an orbit trap
+  // The material id of every hit when the whole scene carries one material.
+  std::optional<double> uniform_material;
+  // Where primary and shadow rays march; none for an unbounded scene.
+  std::optional<RayBounds> ray_bounds;
+};
+
+// Smooth blends whose children's materials are mixed by the blend weight:
+// the polynomial smooth operations and the cubic and exponential blends.
+inline bool mixes_materials(const Node& n) {
+  switch (n.kind) {
+    case Kind::SmoothUnion:
+    case Kind::SmoothIntersection:
+    case Kind::SmoothDifference: return true;
+    case Kind::BlendUnion:
+    case Kind::BlendIntersection:
+    case Kind::BlendDifference: return n.params[0] < 2;  // style: cubic, exponential
+    default: return false;
+  }
+}
+
+}  // namespace sdfc::ir
