@@ -7,6 +7,7 @@
 
 #include "render_helpers.hpp"
 #include "sdfc/codegen/emit_opencl.hpp"
+#include "sdfc/codegen/kernel_abi.hpp"
 
 namespace sdfc {
 namespace {
@@ -128,9 +129,12 @@ TEST(EffectsRender, DepthAovMatchesTheAnalyticSphere) {
                        "scene: {sphere: {radius: 1}}\n");
   const auto& img = r.image;
   std::vector<float> frame = codegen::frame_params(r.module.plan, img.width, img.height);
-  auto f3 = [&](int i) { return ir::Vec3d{double(frame[i]) + frame[i + 3], double(frame[i + 1]) + frame[i + 4], double(frame[i + 2]) + frame[i + 5]}; };
-  ir::Vec3d ro = f3(0), fw = f3(6), rt = f3(12), up = f3(18);
-  double pixel_angle = frame[24];
+  auto f3 = [&](int i) {
+    const int lo = i + abi::kLowPart;
+    return ir::Vec3d{double(frame[i]) + frame[lo], double(frame[i + 1]) + frame[lo + 1], double(frame[i + 2]) + frame[lo + 2]};
+  };
+  ir::Vec3d ro = f3(abi::kEye), fw = f3(abi::kForward), rt = f3(abi::kRight), up = f3(abi::kUp);
+  double pixel_angle = frame[abi::kPixelAngle];
   int hits = 0;
   for (int y = 0; y < img.height; ++y) {
     for (int x = 0; x < img.width; ++x) {

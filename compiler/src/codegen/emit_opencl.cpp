@@ -15,6 +15,7 @@
 #include "prelude.hpp"
 #include "gradient_emitter.hpp"
 #include "scene_emitter.hpp"
+#include "sdfc/codegen/kernel_abi.hpp"
 #include "sdfc/codegen/stdlib_manifest.hpp"
 #include "sdfc/ir/printer.hpp"
 #include "shading_emitter.hpp"
@@ -246,11 +247,14 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
   w.line("real px0 = (real)((scalar)(tile_x0 + x0)) + LANE_X;  // left edges of the lanes' pixels");
   w.line("real py0 = (real)((scalar)(tile_y0 + y0)) + LANE_Y;  // top edges");
   w.line("// camera basis from the frame block (float high + low parts, see frame_params.cpp)");
-  w.line("#define FRAME3(i) v3((real)((scalar)frame[i] + (scalar)frame[i + 3]), (real)((scalar)frame[i + 1] + (scalar)frame[i + 4]), (real)((scalar)frame[i + 2] + (scalar)frame[i + 5]))");
-  w.line("vec3 eye = FRAME3(0), forward = FRAME3(6), right = FRAME3(12), up = FRAME3(18);");
+  w.line(fmt::format("#define FRAME3(i) v3((real)((scalar)frame[i] + (scalar)frame[i + {}]), (real)((scalar)frame[i + 1] + "
+                     "(scalar)frame[i + {}]), (real)((scalar)frame[i + 2] + (scalar)frame[i + {}]))",
+                     abi::kLowPart, abi::kLowPart + 1, abi::kLowPart + 2));
+  w.line(fmt::format("vec3 eye = FRAME3({}), forward = FRAME3({}), right = FRAME3({}), up = FRAME3({});", abi::kEye,
+                     abi::kForward, abi::kRight, abi::kUp));
   w.line("#undef FRAME3");
-  w.line("const scalar pixel_angle = (scalar)frame[24];");
-  if (m.analyses.uses_time) w.line("const scalar time = (scalar)frame[25];  // the scene is animated");
+  w.line(fmt::format("const scalar pixel_angle = (scalar)frame[{}];", abi::kPixelAngle));
+  if (m.analyses.uses_time) w.line(fmt::format("const scalar time = (scalar)frame[{}];  // the scene is animated", abi::kTime));
   w.line(aovs ? "real depth, mat, steps, iterations;" : "real depth, mat, steps;");
   w.line("vec3 normal;");
   std::string post;  // per-sample exposure and tone curve
@@ -296,14 +300,16 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
   } else {
     used.insert("fx_hash");
     used.insert("fx_fract");
-    w.line("// render.samples: samples [frame[26], frame[26] + frame[27]) of this pixel, placed by the");
+    w.line(fmt::format("// render.samples: samples [frame[{0}], frame[{0}] + frame[{1}]) of this pixel, placed by the",
+                       abi::kFirstSample, abi::kSampleCount));
     w.line("// R2 low-discrepancy sequence shifted per pixel (Cranley-Patterson rotation)");
-    w.line("const int s_first = (int)frame[26], s_count = max((int)frame[27], 1);");
+    w.line(fmt::format("const int s_first = (int)frame[{}], s_count = max((int)frame[{}], 1);", abi::kFirstSample,
+                       abi::kSampleCount));
     w.line("real rx = fx_hash(px0, py0, (real)(1.0f)), ry = fx_hash(px0, py0, (real)(2.0f));");
     if (cam.aperture > 0) {
-      w.line("// camera.aperture: a thin lens focused at frame[28], sampled over its disc");
+      w.line(fmt::format("// camera.aperture: a thin lens focused at frame[{}], sampled over its disc", abi::kFocus));
       w.line("real lx = fx_hash(px0, py0, (real)(3.0f)), ly = fx_hash(px0, py0, (real)(4.0f));");
-      w.line("const scalar focus = (scalar)frame[28];");
+      w.line(fmt::format("const scalar focus = (scalar)frame[{}];", abi::kFocus));
       w.line("vec3 lens_right = v3_normalize(right), lens_up = v3_normalize(up);");
     }
     w.line("vec3 color = v3_splat(0.0f);");
@@ -378,20 +384,26 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
   w.blank();
   w.line("__global float* o = out + y0 * out_stride + x0;");
   w.line("const int plane = out_stride * tile_h;");
-  w.line("STORE_PACKET(color.x, o, out_stride);");
-  w.line("STORE_PACKET(color.y, o + plane, out_stride);");
-  w.line("STORE_PACKET(color.z, o + 2 * plane, out_stride);");
-  w.line("STORE_PACKET(depth, o + 3 * plane, out_stride);");
+  // Each value goes to its plane of the ABI (kernel_abi.hpp), by name.
+  auto store = [&](std::string_view plane, const std::string& value, const char* note = "") {
+    int k = abi::plane_index(plane);
+    std::string at = k == 0 ? "o" : k == 1 ? "o + plane" : fmt::format("o + {} * plane", k);
+    w.line(fmt::format("STORE_PACKET({}, {}, out_stride);{}", value, at, note));
+  };
+  store("r", "color.x");
+  store("g", "color.y");
+  store("b", "color.z");
+  store("depth", "depth");
   if (aovs) {
     w.line("// AOVs: normal (0 on a miss), march steps, material id (-1 on a miss), fractal iterations (0 off");
     w.line("// fractals), hit coverage");
-    w.line("STORE_PACKET(normal.x, o + 4 * plane, out_stride);");
-    w.line("STORE_PACKET(normal.y, o + 5 * plane, out_stride);");
-    w.line("STORE_PACKET(normal.z, o + 6 * plane, out_stride);");
-    w.line("STORE_PACKET(steps, o + 7 * plane, out_stride);");
-    w.line("STORE_PACKET(mat, o + 8 * plane, out_stride);");
-    w.line("STORE_PACKET(iterations, o + 9 * plane, out_stride);");
-    w.line("STORE_PACKET(coverage, o + 10 * plane, out_stride);  // hit: the fraction of samples that hit");
+    store("normal_x", "normal.x");
+    store("normal_y", "normal.y");
+    store("normal_z", "normal.z");
+    store("steps", "steps");
+    store("material", "mat");
+    store("iterations", "iterations");
+    store("hit", "coverage", "  // hit: the fraction of samples that hit");
   } else {
     w.line("(void)normal; (void)mat; (void)steps;");
   }
@@ -465,9 +477,9 @@ EmittedKernel emit_opencl(const ir::Module& m, const EmitOptions& opt) {
   EmittedKernel k;
   k.simd_width = wd;
   k.packet_rows = rows;
-  k.planes = {"r", "g", "b", "depth"};
-  if (opt.aovs) k.planes.insert(k.planes.end(), {"normal_x", "normal_y", "normal_z", "steps", "material", "iterations", "hit"});
-  k.frame_floats = kFrameFloats;
+  k.planes.assign(abi::kImagePlanes.begin(), abi::kImagePlanes.end());
+  if (opt.aovs) k.planes.insert(k.planes.end(), abi::kAovPlanes.begin(), abi::kAovPlanes.end());
+  k.frame_floats = abi::kFrameFloats;
   std::string before, after;
   for (const auto* f : fns) {
     k.stdlib_functions.push_back(f->name);

@@ -1,17 +1,6 @@
 // The per-frame parameter block. Values the camera or time changes live here,
-// not in the kernel source, so a new frame never recompiles.
-//
-//   [0..2]  camera position (high part)   [3..5]  position (low part)
-//   [6..8]  forward, unit  (high)         [9..11] forward (low)
-//   [12..14] right * tan(fov/2) * aspect  [15..17] (low)
-//   [18..20] up * tan(fov/2)              [21..23] (low)
-//   [24]    pixel angle: 2 tan(fov/2) / height (pixel footprint per unit distance)
-//   [25]    time in seconds
-//   [26]    first anti-aliasing sample of this launch  [27] samples in it
-//           (progressive rendering launches the samples pass by pass)
-//   [28]    focus distance (depth of field)
-// Each vector is split into a float and the float of its remainder, so a
-// double-precision kernel reads the camera to ~48 bits through a float buffer.
+// not in the kernel source, so a new frame never recompiles. The layout is
+// the kernel ABI's (sdfc/codegen/kernel_abi.hpp).
 #include <cmath>
 #include <numbers>
 
@@ -76,7 +65,7 @@ void put(std::vector<float>& f, int at, V v) {
   for (int i = 0; i < 3; ++i) {
     float hi = static_cast<float>(v[i]);
     f[at + i] = hi;
-    f[at + 3 + i] = static_cast<float>(v[i] - double(hi));
+    f[at + abi::kLowPart + i] = static_cast<float>(v[i] - double(hi));
   }
 }
 }  // namespace
@@ -88,19 +77,19 @@ std::vector<float> frame_params(const ir::RenderPlan& plan, int width, int heigh
   V up = cross(rt, fw);
   double tan_half = std::tan(c.fov_degrees * std::numbers::pi / 360.0);
   double aspect = double(width) / double(height);
-  std::vector<float> f(kFrameFloats, 0.0f);
-  put(f, 0, c.position);
-  put(f, 6, fw);
-  put(f, 12, scale(rt, tan_half * aspect));
-  put(f, 18, scale(up, tan_half));
-  f[24] = static_cast<float>(2.0 * tan_half / height);
-  f[25] = static_cast<float>(time);
-  f[26] = 0.0f;
-  f[27] = static_cast<float>(plan.march.samples);
+  std::vector<float> f(abi::kFrameFloats, 0.0f);
+  put(f, abi::kEye, c.position);
+  put(f, abi::kForward, fw);
+  put(f, abi::kRight, scale(rt, tan_half * aspect));
+  put(f, abi::kUp, scale(up, tan_half));
+  f[abi::kPixelAngle] = static_cast<float>(2.0 * tan_half / height);
+  f[abi::kTime] = static_cast<float>(time);
+  f[abi::kFirstSample] = 0.0f;
+  f[abi::kSampleCount] = static_cast<float>(plan.march.samples);
   double to_target = std::sqrt(sub(c.target, c.position)[0] * sub(c.target, c.position)[0] +
                                sub(c.target, c.position)[1] * sub(c.target, c.position)[1] +
                                sub(c.target, c.position)[2] * sub(c.target, c.position)[2]);
-  f[28] = static_cast<float>(c.focus_distance > 0 ? c.focus_distance : to_target);
+  f[abi::kFocus] = static_cast<float>(c.focus_distance > 0 ? c.focus_distance : to_target);
   return f;
 }
 

@@ -6,6 +6,7 @@
 #include <sdfrt/errors.hpp>
 
 #include "sdfc/codegen/emit_opencl.hpp"
+#include "sdfc/codegen/kernel_abi.hpp"
 #include "sdfc/compile.hpp"
 #include "sdfc/reference/evaluator.hpp"
 #include "sdfc/support/diagnostics.hpp"
@@ -125,12 +126,13 @@ std::optional<sdfrt::FloatImage> SceneSession::render_interruptible(const ir::Ca
 void offset_frame_rays(std::vector<float>& frame, int width, int height, double dx, double dy) {
   // The kernel's ray is forward + right*u + up*v with u = 2x/w - 1 and
   // v = 1 - 2y/h; a shift of (dx, dy) pixels adds right*2dx/w - up*2dy/h.
-  auto get = [&](int i) { return double(frame[i]) + double(frame[i + 3]); };
+  using namespace abi;
+  auto get = [&](int i) { return double(frame[i]) + double(frame[i + kLowPart]); };
   for (int i = 0; i < 3; ++i) {
-    double f = get(6 + i) + get(12 + i) * (2.0 * dx / width) - get(18 + i) * (2.0 * dy / height);
+    double f = get(kForward + i) + get(kRight + i) * (2.0 * dx / width) - get(kUp + i) * (2.0 * dy / height);
     float hi = static_cast<float>(f);
-    frame[6 + i] = hi;
-    frame[9 + i] = static_cast<float>(f - double(hi));
+    frame[kForward + i] = hi;
+    frame[kForward + kLowPart + i] = static_cast<float>(f - double(hi));
   }
 }
 

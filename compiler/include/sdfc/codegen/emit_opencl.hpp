@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "sdfc/codegen/kernel_abi.hpp"
 #include "sdfc/ir/module.hpp"
 
 namespace sdfc::codegen {
@@ -36,8 +37,8 @@ EmittedKernel emit_opencl(const ir::Module& m, const EmitOptions& opt = {});
 
 // The frame parameter block (camera basis, pixel angle, time) the kernel
 // reads from `frame`; computed on the host per frame, so moving the camera
-// never recompiles. Layout is documented in frame_params.cpp.
+// never recompiles. Its layout is sdfc/codegen/kernel_abi.hpp.
 std::vector<float> frame_params(const ir::RenderPlan& plan, int width, int height, double time = 0);
-inline constexpr int kFrameFloats = 32;
+inline constexpr int kFrameFloats = abi::kFrameFloats;
 
 }  // namespace sdfc::codegen
