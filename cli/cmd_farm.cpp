@@ -28,10 +28,10 @@ namespace fs = std::filesystem;
 struct FarmSlurmArgs {
   SceneArgs scene;
   std::string frames, still, output, partition, time, mem, script, cache_dir, sdfc;
-  int parts = 0, tasks = 0, bit_depth = 8;
+  int parts = 0, tasks = 0, bit_depth = 8, cpus = 0;
   double fps = 30;
   std::vector<std::string> aovs;
-  bool submit = false;
+  bool submit = false, exclusive = false;
 };
 
 // #SBATCH lines take no quoting: refuse what would break them.
@@ -102,6 +102,7 @@ int run_farm_slurm(const FarmSlurmArgs& a) {
     throw std::invalid_argument(fmt::format("--tasks {}: there are only {} {} to share", job.tasks, frame_count,
                                             job.parts > 0 ? "parts" : "frames"));
   job.partition = a.partition, job.time = a.time, job.mem = a.mem;
+  job.cpus_per_task = a.cpus, job.exclusive = a.exclusive;
   const std::string base = fs::absolute(a.script.empty() ? base_of(a.output) : a.script).lexically_normal().string();
   job.name = "sdfc-" + fs::path(base).filename().string();
   job.log_dir = base + ".logs";
@@ -160,6 +161,9 @@ Action add_farm(CLI::App& app) {
   cmd->add_option("--partition", a->partition, "Slurm partition (default: the cluster's)");
   cmd->add_option("--time", a->time, "Time limit per task, e.g. 02:00:00");
   cmd->add_option("--mem", a->mem, "Memory per task, e.g. 4G");
+  cmd->add_option("--cpus-per-task", a->cpus, "CPUs per task (the CPU device renders on every core it is given)")
+      ->check(CLI::Range(1, 4096));
+  cmd->add_flag("--exclusive", a->exclusive, "A whole node per task (the fastest for CPU rendering)");
   cmd->add_option("-o,--output", a->output,
                   "The images: a pattern such as out/frame_%04d.png, or a still's PNG (out/print.png)")
       ->required();

@@ -14,6 +14,8 @@ std::string header(const FarmJob& job, const std::string& name, const std::strin
   if (!job.partition.empty()) s += fmt::format("#SBATCH --partition={}\n", job.partition);
   if (!job.time.empty()) s += fmt::format("#SBATCH --time={}\n", job.time);
   if (!job.mem.empty()) s += fmt::format("#SBATCH --mem={}\n", job.mem);
+  if (job.cpus_per_task > 0) s += fmt::format("#SBATCH --cpus-per-task={}\n", job.cpus_per_task);
+  if (job.exclusive) s += "#SBATCH --exclusive\n";
   return s;
 }
 

@@ -17,6 +17,8 @@ struct FarmJob {
   int still_width = 0, still_height = 0, parts = 0;  // a still
   int tasks = 1;
   std::string partition, time, mem;  // "" leaves Slurm's default
+  int cpus_per_task = 0;             // 0: Slurm's default
+  bool exclusive = false;            // a whole node per task
   std::string output;       // frames: the pattern; still: the final PNG
   std::string parts_pattern;  // still: where the region files go (part_%03d.region)
   std::vector<std::string> part_files;  // still: that pattern for each part, in order

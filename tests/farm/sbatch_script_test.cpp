@@ -24,6 +24,7 @@ FarmJob still_job() {
   j.partition = "render";
   j.time = "01:00:00";
   j.mem = "4G";
+  j.cpus_per_task = 8;
   return j;
 }
 
@@ -37,6 +38,8 @@ TEST(SbatchScript, StillArrayAndMerge) {
   EXPECT_TRUE(has(a, "#SBATCH --partition=render\n"));
   EXPECT_TRUE(has(a, "#SBATCH --time=01:00:00\n"));
   EXPECT_TRUE(has(a, "#SBATCH --mem=4G\n"));
+  EXPECT_TRUE(has(a, "#SBATCH --cpus-per-task=8\n"));
+  EXPECT_FALSE(has(a, "--exclusive"));
   EXPECT_TRUE(has(a, "#SBATCH --requeue\n"));
   EXPECT_TRUE(has(a, "--shard \"$SLURM_ARRAY_TASK_ID/$SLURM_ARRAY_TASK_COUNT\"")) << a;
   EXPECT_TRUE(has(a, "--width 640 --height 480 --parts 3")) << a;
