@@ -166,8 +166,7 @@ int run_render(RenderArgs a) {
   out.quiet = a.quiet;
   out.keep_partial = a.keep_partial;
   if (a.farm.splits_still()) return render_still_parts({&renderer, &m.plan, w, h, a.tile, out, a.output, &g_cancel}, a.farm);
-  frames = a.farm.frames_of_task(frames, sequence);
-  for (int fno : frames) {
+  for (int fno : a.farm.frames_of_task(frames, sequence)) {
     const double time = fno / a.fps;
     out.beauty = sequence && has_frame_field(a.output) ? frame_path(a.output, fno) : a.output;
     if (a.farm.skip_done_frame(out, fno)) continue;

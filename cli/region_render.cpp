@@ -7,6 +7,7 @@
 #include <sdfrt/errors.hpp>
 #include <sdfrt/region_file.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <iostream>
@@ -24,9 +25,22 @@ std::vector<sdfrt::RegionSection> sections_for(const std::vector<std::string>& a
   return s;
 }
 
+// The kernel without its comments, which name the scene file and its lines:
+// the same scene at another path renders the same pixels.
+std::string code_of(const std::string& source) {
+  std::string code;
+  for (std::size_t at = 0; at < source.size();) {
+    const std::size_t nl = std::min(source.find('\n', at), source.size());
+    const std::size_t end = std::min(source.find("//", at), nl);
+    code.append(source, at, end - at).push_back('\n');
+    at = nl + 1;
+  }
+  return code;
+}
+
 // What decides the pixels: parts with different fingerprints do not merge.
 std::string identity(const StillJob& job, const std::vector<float>& frame) {
-  std::string id = job.renderer->spec().source;
+  std::string id = code_of(job.renderer->spec().source);
   id += fmt::format("|{}x{}|{}|{}|{}|", job.width, job.height, job.plan->march.samples, job.plan->march.gamma,
                     job.out.bit_depth);
   for (const auto& a : job.out.aovs) id += a + ",";

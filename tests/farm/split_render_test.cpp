@@ -29,6 +29,10 @@ TEST(SplitRender, StripsMergeToTheWholeStillWithItsAovs) {
   RunResult r = ok("render " + kLens + " --aov depth,normal,hit --parts 4 -o " + d.file("parts/p_%d.region"));
   EXPECT_EQ(r.out, d.file("parts/p_0.region") + "\n" + d.file("parts/p_1.region") + "\n" + d.file("parts/p_2.region") +
                        "\n" + d.file("parts/p_3.region") + "\n");
+  // The same scene from another path (another node's mount) is the same still.
+  std::filesystem::copy_file(kLens, d.file("copy.yaml"));
+  std::filesystem::remove(d.file("parts/p_2.region"));
+  ok("render " + d.file("copy.yaml") + " --aov depth,normal,hit --parts 4 --shard 2/4 -o " + d.file("parts/p_%d.region"));
   ok("merge " + d.file("parts/p_2.region") + " " + d.file("parts/p_0.region") + " " + d.file("parts/p_3.region") + " " +
      d.file("parts/p_1.region") + " -o " + d.file("merged.png"));
   for (const char* f : {".png", ".depth.pfm", ".normal.pfm", ".hit.pfm"})
@@ -93,6 +97,9 @@ TEST(SplitRender, ShardsOfFramesEqualTheWholeSequence) {
   }
   RunResult r = ok("render " + kOrbit + " --frames 0:7 --shard 1/3 --shard-mode strided -o " + d.file("s/f_%02d.png"));
   EXPECT_EQ(r.out, d.file("s/f_01.png") + "\n" + d.file("s/f_04.png") + "\n" + d.file("s/f_07.png") + "\n");
+  // A task with one frame of a sequence still creates the sequence's folder.
+  r = ok("render " + kOrbit + " --frames 0:7 --shard 7/8 -o " + d.file("one_each/f_%02d.png"));
+  EXPECT_EQ(r.out, d.file("one_each/f_07.png") + "\n");
 }
 
 TEST(SplitRender, ARerunSkipsCompleteFramesAndRedoesTheRest) {
