@@ -107,10 +107,10 @@ TEST_F(Slurm, AFourPartStillMergedEqualsOneMachineWithItsAovs) {
 
 TEST_F(Slurm, ATaskRequeuedMidFrameResumesWithoutAPartialFile) {
   ScratchDir d;
-  // Six frames of about half a second each, in one task.
+  // Eight frames of about half a second each, in one task.
   const std::string size = " --set render.width=256 --set render.height=192 --set render.samples=8";
-  ok("render -q " + kOrbit + size + " --frames 0:5 -o " + d.file("one/f_%d.png"));
-  RunResult r = ok("farm slurm " + kOrbit + size + " --frames 0:5 --tasks 1 -o " + d.file("farm/f_%d.png") + " --submit");
+  ok("render -q " + kOrbit + size + " --frames 0:7 -o " + d.file("one/f_%d.png"));
+  RunResult r = ok("farm slurm " + kOrbit + size + " --frames 0:7 --tasks 1 -o " + d.file("farm/f_%d.png") + " --submit");
   const std::string id = job_id(r.out, "render job array");
   ASSERT_FALSE(id.empty()) << r.out << r.err;
   // Once the first frame is written, the task is in the middle of the next.
@@ -118,7 +118,7 @@ TEST_F(Slurm, ATaskRequeuedMidFrameResumesWithoutAPartialFile) {
   while (!std::filesystem::exists(d.file("farm/f_0.png")) && std::chrono::steady_clock::now() < end)
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   ASSERT_TRUE(std::filesystem::exists(d.file("farm/f_0.png"))) << job_states(id);
-  ASSERT_FALSE(std::filesystem::exists(d.file("farm/f_5.png"))) << "the task finished before it could be re-queued";
+  ASSERT_FALSE(std::filesystem::exists(d.file("farm/f_7.png"))) << "the task finished before it could be re-queued";
   const Shell rq = shell("scontrol requeue " + id);
   ASSERT_EQ(rq.code, 0) << rq.out;
   // slurm-local's cred_expire=5 lets the re-queued task start again after about 5 s.
@@ -127,7 +127,7 @@ TEST_F(Slurm, ATaskRequeuedMidFrameResumesWithoutAPartialFile) {
   const std::string log = logs(d.file("farm/f.logs"));
   EXPECT_NE(log.find("was not written"), std::string::npos) << log;  // stopped mid-frame by SIGTERM
   EXPECT_TRUE(std::regex_search(log, std::regex("frame 0: \\S*f_0.png is complete already, skipped"))) << log;
-  for (int f = 0; f < 6; ++f) {
+  for (int f = 0; f < 8; ++f) {
     const std::string name = "/f_" + std::to_string(f) + ".png";
     EXPECT_EQ(compare_files(d.file("one") + name, d.file("farm") + name), "");
   }

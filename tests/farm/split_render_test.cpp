@@ -125,7 +125,7 @@ TEST(SplitRender, ATerminatedRenderLeavesNoPartialFile) {
   ok("render " + kLens + " --width 32 --height 32 -o " + d.file("warm.png"));  // the kernel in the cache
   RunResult r = run_sdfc("render " + kLens + " --width 640 --height 480 --set render.samples=64 --aov depth --frames 0:3 -o " +
                              d.file("f_%d.png"),
-                         "timeout --preserve-status -s TERM 2 ");
+                         "timeout --preserve-status -s TERM 4 ");
   EXPECT_EQ(r.code, 130) << r.err;
   EXPECT_NE(r.err.find("was not written"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(d.file("f_0.png")));
