@@ -4,7 +4,6 @@
 
 #include <sdfrt/region_file.hpp>
 
-#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -52,8 +51,9 @@ Rect parse_region(const std::string& text, int width, int height) {
   std::smatch m;
   if (!std::regex_match(text, m, re))
     throw std::invalid_argument(
-        fmt::format("--region '{}': expected X0,Y0,X1,Y1 in pixels (the corner after the last pixel), e.g. 0,0,{},{}",
-                    text, width, std::max(height / 2, 1)));
+        fmt::format("--region '{}': expected X0,Y0,X1,Y1 in pixels, X1 and Y1 one past the last pixel "
+                    "(e.g. 0,0,1920,540: the top half of a 1920x1080 image)",
+                    text));
   Rect r{std::stoi(m[1]), std::stoi(m[2]), std::stoi(m[3]), std::stoi(m[4])};
   if (r.x1 <= r.x0 || r.y1 <= r.y0 || r.x1 > width || r.y1 > height)
     throw std::invalid_argument(fmt::format("--region '{}': needs X0 < X1 <= {} and Y0 < Y1 <= {} (the image is {}x{})",
