@@ -19,6 +19,7 @@
 #include <sdfrt/renderer.hpp>
 
 #include "cli_support.hpp"
+#include "farm_render.hpp"
 #include "offline_render.hpp"
 #include "commands.hpp"
 #include "sdfc/compile.hpp"
@@ -61,6 +62,7 @@ struct RenderArgs {
   bool reference = false;
   double reference_epsilon = ir::kReferenceHitEpsilon;
   int reference_samples = ir::kReferenceGrid;  // N: an N x N grid of rays per pixel
+  FarmArgs farm;  // --shard, --region, --parts (cli/farm_args.cpp)
 };
 
 // --reference: ir::make_reference, plus the depth, normal and hit AOVs.
@@ -124,6 +126,7 @@ int run_render(RenderArgs a) {
 
   const int w = m.plan.march.width, h = m.plan.march.height;
   std::signal(SIGINT, on_sigint);
+  std::signal(SIGTERM, on_sigint);  // a farm's scheduler stops a task so: temp files go, no partial image
   if (a.repeat > 0) {
     check_host_memory(w, h, k.planes.size());  // --repeat holds whole images in memory
     std::vector<float> frame = codegen::frame_params(m.plan, w, h, 0.0);
@@ -162,9 +165,11 @@ int run_render(RenderArgs a) {
   out.aovs = a.aovs;
   out.quiet = a.quiet;
   out.keep_partial = a.keep_partial;
-  for (int fno : frames) {
+  if (a.farm.splits_still()) return render_still_parts({&renderer, &m.plan, w, h, a.tile, out, a.output, &g_cancel}, a.farm);
+  for (int fno : a.farm.frames_of_task(frames, sequence)) {
     const double time = fno / a.fps;
     out.beauty = sequence && has_frame_field(a.output) ? frame_path(a.output, fno) : a.output;
+    if (a.farm.skip_done_frame(out, fno)) continue;
     // A sequence's directory is created (out/frame_%04d.png); a single image's is not.
     auto parent = std::filesystem::path(out.beauty).parent_path();
     if (sequence && frames.size() > 1 && !parent.empty()) {
@@ -228,6 +233,7 @@ Action add_render(CLI::App& app) {
   cmd->add_option("--reference-samples", a->reference_samples,
                   "The reference's rays per pixel: an N x N stratified grid (default 8: 64 rays; 1 = the pixel centre)")
       ->check(CLI::Range(1, 32));
+  a->farm.add_to(*cmd);
   return [a] { return run_render(*a); };
 }
 

@@ -16,5 +16,7 @@ Action add_devices(CLI::App& app);
 Action add_view(CLI::App& app);
 Action add_audit(CLI::App& app);
 Action add_compare(CLI::App& app);
+Action add_merge(CLI::App& app);  // cmd_merge.cpp: a still's region files into its image
+Action add_farm(CLI::App& app);   // cmd_farm.cpp: Slurm job scripts
 
 }  // namespace sdfc::cli

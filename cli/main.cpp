@@ -36,6 +36,8 @@ int main(int argc, char** argv) {
   reg(add_view);
   reg(add_audit);
   reg(add_compare);
+  reg(add_merge);
+  reg(add_farm);
 
   try {
     app.parse(argc, argv);

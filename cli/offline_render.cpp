@@ -33,7 +33,7 @@ struct AovWriters {
   std::vector<std::unique_ptr<sdfrt::BandWriter>> writers;
   std::vector<std::string> paths;
   AovWriters(const sdfrt::KernelSpec& spec, int width, int height, const std::string& beauty,
-             const std::vector<std::string>& aovs) {
+             const std::vector<std::string>& aovs, const decltype(OfflineOutput::open_band_writer)& open = {}) {
     for (const auto& a : aovs) {
       std::vector<int> planes;
       if (a == "normal")
@@ -41,11 +41,11 @@ struct AovWriters {
       else
         planes = {plane_of(spec, a)};
       paths.push_back(aov_path(beauty, a));
-      writers.push_back(sdfrt::open_pfm_writer(paths.back(), width, height, planes));
+      writers.push_back(open ? open(a, width, height, planes) : sdfrt::open_pfm_writer(paths.back(), width, height, planes));
     }
   }
   AovWriters(const sdfrt::KernelSpec& spec, const OfflineFrame& f, const OfflineOutput& out)
-      : AovWriters(spec, f.width, f.height, out.beauty, out.aovs) {}
+      : AovWriters(spec, f.width, f.height, out.beauty, out.aovs, out.open_band_writer) {}
   void write(const sdfrt::FloatImage& band) {
     for (auto& w : writers) w->write_band(band);
   }
@@ -124,6 +124,11 @@ struct FrameProgress {
     };
   }
 };
+
+std::unique_ptr<sdfrt::BandWriter> open_beauty(const OfflineOutput& out, int w, int h) {
+  if (out.open_band_writer) return out.open_band_writer("", w, h, {0, 1, 2});
+  return sdfrt::open_png_writer(out.beauty, w, h, {0, 1, 2}, out.bit_depth);
+}
 
 int tiles_in(int width, int rows, int tile) { return ((width + tile - 1) / tile) * ((rows + tile - 1) / tile); }
 
@@ -204,7 +209,9 @@ std::vector<std::string> render_offline(sdfrt::Renderer& renderer, const Offline
                                         int tile, std::atomic<bool>* cancel) {
   const sdfrt::KernelSpec& spec = renderer.spec();
   const int w = f.width, h = f.height;
-  const std::size_t pixels = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
+  // A region decides progressive or not as its whole image does: the same bytes.
+  const std::size_t pixels = out.window.full_width > 0 ? std::size_t(out.window.full_width) * std::size_t(out.window.full_height)
+                                                     : static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
   // RGB sums, and with AOVs 8 more planes of sums (AovMean)
   const std::size_t sums = out.aovs.empty() ? 3 : 11;
   const bool progressive = f.samples > 1 && pixels * sums * sizeof(float) <= kMaxAccumulatorBytes;
@@ -221,6 +228,7 @@ std::vector<std::string> render_offline(sdfrt::Renderer& renderer, const Offline
   opt.tile_width = opt.tile_height = tile;
   opt.cancel = cancel;
   opt.progress = progress.band_callback();
+  opt.window = out.window;
   // On cancel the renderer hands over the band with the tiles it finished.
   sdfrt::FloatImage stopped_band;
   if (out.keep_partial) opt.partial = &stopped_band;
@@ -239,7 +247,7 @@ std::vector<std::string> render_offline(sdfrt::Renderer& renderer, const Offline
     return written;
   };
   if (!progressive) {
-    auto beauty = sdfrt::open_png_writer(out.beauty, w, h, {0, 1, 2}, out.bit_depth);
+    auto beauty = open_beauty(out, w, h);
     for (int b = 0; b < bands; ++b) {
       opt.row_begin = b * tile;
       opt.row_count = std::min(tile, h - opt.row_begin);
@@ -287,7 +295,7 @@ std::vector<std::string> render_offline(sdfrt::Renderer& renderer, const Offline
           // In the first pass the unfinished tiles stay black; later, the
           // band keeps the mean of the passes before.
           if (pass == 0) mean.add(stopped_band, opt.row_begin);
-          auto writer = sdfrt::open_png_writer(out.beauty, w, h, {0, 1, 2}, out.bit_depth);
+          auto writer = open_beauty(out, w, h);
           mean.write(*writer, tile);
           std::cerr << fmt::format("sdfc: partial image: {} (stopped in pass {} of {}: {} sample(s) per pixel{})\n",
                                    writer->finish_partial(partial).path, pass + 1, passes, std::max(pass, 1),
@@ -302,12 +310,12 @@ std::vector<std::string> render_offline(sdfrt::Renderer& renderer, const Offline
     if (aov_mean) ++aov_mean->passes;
     if (out.keep_partial && pass + 1 < passes) {
       // Refreshed after every pass, to watch the image refine.
-      auto writer = sdfrt::open_png_writer(out.beauty, w, h, {0, 1, 2}, out.bit_depth);
+      auto writer = open_beauty(out, w, h);
       mean.write(*writer, tile);
       writer->finish_partial(partial);
     }
   }
-  auto beauty = sdfrt::open_png_writer(out.beauty, w, h, {0, 1, 2}, out.bit_depth);
+  auto beauty = open_beauty(out, w, h);
   mean.write(*beauty, tile);
   written.push_back(beauty->finish().path);
   if (aov_mean) {

@@ -7,7 +7,11 @@
 // when asked (keep_partial), writes what was done to <stem>.partial.png.
 #include <sdfrt/renderer.hpp>
 
+#include <sdfrt/stream_writers.hpp>
+
 #include <atomic>
+#include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -21,6 +25,13 @@ struct OfflineOutput {
   // On cancel, write the tiles done so far to partial_path(beauty) (the
   // rest black); with several samples it is also refreshed after each pass.
   bool keep_partial = false;
+  // When set, the bands go here instead of the PNG and PFM files (a still's
+  // region file, cli/region_render.cpp): called with "" for the image, else
+  // an AOV's name, and the kernel planes it takes.
+  std::function<std::unique_ptr<sdfrt::BandWriter>(const std::string& aov, int width, int height, std::vector<int> planes)>
+      open_band_writer;
+  // A still's region: the frame's width x height pixels at (x0, y0) of the whole image.
+  sdfrt::RenderOptions::Window window;
 };
 
 // The AOVs --aov accepts (kernel planes of the same names). With several

@@ -49,6 +49,12 @@ struct RenderOptions {
   // width x row_count image, so huge renders can stream band by band.
   int row_begin = 0;
   int row_count = 0;
+  // A window of a larger image (a still's region on a render farm): the
+  // kernel sees a full_width x full_height image and this call's width x
+  // height pixels start at (x0, y0) of it. full_width 0: no window.
+  struct Window {
+    int full_width = 0, full_height = 0, x0 = 0, y0 = 0;
+  } window;
 };
 
 struct RenderStats {

@@ -89,6 +89,12 @@ FloatImage Renderer::render(const std::vector<float>& frame, int width, int heig
   if (options.row_begin < 0 || band_rows < 1 || options.row_begin + band_rows > height)
     throw std::invalid_argument(fmt::format("rows {}..{} are outside the image's {} rows", options.row_begin,
                                             options.row_begin + band_rows, height));
+  const RenderOptions::Window& win = options.window;
+  const bool windowed = win.full_width > 0;
+  if (windowed && (win.x0 < 0 || win.y0 < 0 || win.x0 + width > win.full_width || win.y0 + height > win.full_height ||
+                   win.full_width > kMaxImageSide || win.full_height > kMaxImageSide))
+    throw std::invalid_argument(fmt::format("a {}x{} window at {},{} is outside the {}x{} image", width, height, win.x0,
+                                            win.y0, win.full_width, win.full_height));
   // Tiles are planned over the band; the kernel sees image rows.
   const TilePlan plan = plan_tiles(width, band_rows, options.tile_width, options.tile_height);
   const int ph = spec_.packet_rows;
@@ -123,8 +129,8 @@ FloatImage Renderer::render(const std::vector<float>& frame, int width, int heig
   cl_mem frame_mem = frame_buffer_.get();
   kernel.set_arg(kOut, out);
   kernel.set_arg(kFrame, frame_mem);
-  kernel.set_arg(kImgW, static_cast<cl_int>(width));
-  kernel.set_arg(kImgH, static_cast<cl_int>(height));
+  kernel.set_arg(kImgW, static_cast<cl_int>(windowed ? win.full_width : width));
+  kernel.set_arg(kImgH, static_cast<cl_int>(windowed ? win.full_height : height));
 
   RenderStats stats;
   const int total = static_cast<int>(plan.tiles.size());
@@ -145,8 +151,8 @@ FloatImage Renderer::render(const std::vector<float>& frame, int width, int heig
     const int groups_y = ceil_div(launch_h, ph);
     const int stride = groups_x * pw;
     const int rows = groups_y * ph;  // whole packets; the excess rows are dropped
-    kernel.set_arg(kTileX0, static_cast<cl_int>(tile.x0));
-    kernel.set_arg(kTileY0, static_cast<cl_int>(tile.y0 + options.row_begin));
+    kernel.set_arg(kTileX0, static_cast<cl_int>(tile.x0 + win.x0));
+    kernel.set_arg(kTileY0, static_cast<cl_int>(tile.y0 + options.row_begin + win.y0));
     kernel.set_arg(kTileW, static_cast<cl_int>(stride));
     kernel.set_arg(kTileH, static_cast<cl_int>(rows));
     kernel.set_arg(kOutStride, static_cast<cl_int>(stride));
