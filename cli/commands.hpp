@@ -16,5 +16,6 @@ Action add_devices(CLI::App& app);
 Action add_view(CLI::App& app);
 Action add_audit(CLI::App& app);
 Action add_compare(CLI::App& app);
+Action add_mesh(CLI::App& app);
 
 }  // namespace sdfc::cli

@@ -36,6 +36,7 @@ int main(int argc, char** argv) {
   reg(add_view);
   reg(add_audit);
   reg(add_compare);
+  reg(add_mesh);
 
   try {
     app.parse(argc, argv);
