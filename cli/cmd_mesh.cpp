@@ -6,9 +6,11 @@
 
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <sdfrt/device.hpp>
 #include <sdfrt/errors.hpp>
 #include <sdfrt/mesh/mesh_io.hpp>
@@ -37,6 +39,7 @@ struct MeshArgs {
   double voxel = 0;
   std::string bounds;
   double adaptivity = 0;
+  double iso = std::numeric_limits<double>::quiet_NaN();
   bool colour = false;
   std::string frames;
   double fps = 30;
@@ -103,6 +106,7 @@ int run_mesh(const MeshArgs& a) {
   const double limit = a.memory_limit_gib > 0 ? a.memory_limit_gib * (1u << 30) : default_memory_limit();
   sdfrt::mesh::MesherOptions opt;
   opt.adaptivity = a.adaptivity;
+  opt.iso = std::isnan(a.iso) ? default_iso(m, base.voxel) : a.iso;
   opt.colour = a.colour && sdfrt::mesh::holds_colour(*format);
   opt.gamma = m.plan.march.gamma;
   opt.dense = a.dense;
@@ -149,6 +153,12 @@ int run_mesh(const MeshArgs& a) {
                                st.blocks, st.samples / 1e6, 100.0 * st.samples / dense, dense / 1e6,
                                st.grid_bytes / 1048576.0);
     }
+    if (!a.quiet && st.iso != 0 && std::isnan(a.iso))
+      std::cerr << fmt::format("note: the surface is taken where the fractal's distance estimate is half a voxel, "
+                               "{:.4g} (--iso sets it)\n", st.iso);
+    if (!a.quiet && mesh.triangles.empty() && st.unsigned_field)
+      std::cerr << "note: the mesh is empty: the scene's distance is never negative in these bounds; a positive --iso "
+                   "takes the surface at that distance\n";
     if (a.check) print_check(mesh);
     std::cout << path << "\n";
   }
@@ -173,6 +183,9 @@ Action add_mesh(CLI::App& app) {
   cmd->add_option("--adaptivity", a->adaptivity, "0 keeps every polygon; up to 1 merges polygons on flat parts "
                                                  "(fewer triangles)")
       ->check(CLI::Range(0.0, 1.0));
+  cmd->add_option("--iso", a->iso, "Take the surface at this distance in scene units: positive thickens thin parts, "
+                                   "negative thins them (default 0; half a voxel for escape-time fractals: mandelbulb, "
+                                   "mandelbox, julia, hybrid)");
   cmd->add_flag("--colour,--color", a->colour, "Per-vertex colour from the scene's materials and orbit traps (PLY, OBJ)");
   cmd->add_option("--frames", a->frames, "Mesh frames N, FIRST:LAST or FIRST:LAST:STEP at time = frame / fps; "
                                          "-o then needs a field such as %04d");

@@ -56,6 +56,16 @@ Region scene_region(const ir::Module& m) {
   return r;
 }
 
+double default_iso(const ir::Module& m, double voxel) {
+  for (ir::NodeId id : m.graph->postorder(m.root)) {
+    const ir::Kind k = m.graph->node(id).kind;
+    if (k == ir::Kind::Mandelbulb || k == ir::Kind::Juliabulb || k == ir::Kind::Mandelbox ||
+        k == ir::Kind::QuaternionJulia || k == ir::Kind::Hybrid)
+      return 0.5 * voxel;
+  }
+  return 0;
+}
+
 sdfrt::mesh::GridSpec make_grid(const Region& r, int resolution, double voxel) {
   double ext = 0;
   for (int a = 0; a < 3; ++a) ext = std::max(ext, r.hi[a] - r.lo[a]);

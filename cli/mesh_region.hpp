@@ -19,6 +19,11 @@ Region parse_bounds(const std::string& text);
 // The scene's inferred bounds, padded so the cut never touches the surface;
 // throws std::invalid_argument asking for --bounds when they are infinite.
 Region scene_region(const ir::Module& m);
+// The distance the surface is taken at: half a voxel where the scene holds
+// an escape-time fractal (mandelbulb, mandelbox, julia, hybrid), whose
+// estimate is good only outside the set and gives a dust of specks where
+// it turns negative (a render likewise stops at its hit epsilon); else 0.
+double default_iso(const ir::Module& m, double voxel);
 // resolution: voxels along the longest side (used when voxel <= 0).
 sdfrt::mesh::GridSpec make_grid(const Region& r, int resolution, double voxel);
 

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <set>
 
 #include "mesh_readers.hpp"
 #include "run_sdfc.hpp"
@@ -69,6 +70,25 @@ scene:
     const double want[3] = {left ? 0.8 : 0.1, left ? 0.1 : 0.2, left ? 0.1 : 0.9};
     for (int c = 0; c < 3; ++c) ASSERT_NEAR(int(ply.colours[i][c]), enc(want[c]), 1) << "vertex " << i;
   }
+}
+
+TEST(MeshCli, IsoOffsetsTheSurface) {
+  ScratchDir dir;
+  auto r = run_sdfc("mesh " + dir.write("s.yaml", kSphere) + " --resolution 48 --bounds -1.5,-1.5,-1.5,1.5,1.5,1.5 "
+                    "--iso 0.25 -o " + dir.file("s.ply"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  auto m = sdfc::test::read_ply(dir.file("s.ply"));
+  EXPECT_NEAR(sdfrt::mesh::volume(m) / (4.0 / 3.0 * 3.14159265358979 * 1.25 * 1.25 * 1.25), 1.0, 0.01);
+}
+
+TEST(MeshCli, OrbitTrapColoursVaryOverAFractal) {
+  ScratchDir dir;
+  auto r = run_sdfc("mesh bench/scenes/mandelbulb-1280.yaml --resolution 48 --colour -o " + dir.file("b.ply"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("half a voxel"), std::string::npos) << r.err;
+  auto m = sdfc::test::read_ply(dir.file("b.ply"));
+  std::set<sdfrt::mesh::Rgb8> distinct(m.colours.begin(), m.colours.end());
+  EXPECT_GT(distinct.size(), 50u);  // the palette, not one flat material colour
 }
 
 TEST(MeshCli, StlWarnsThatItHoldsNoColour) {

@@ -14,6 +14,7 @@ Meshed mesh_scene(const std::string& yaml, int resolution, std::optional<cli::Re
   opt.colour = colour;
   opt.dense = dense;
   opt.gamma = r.module.plan.march.gamma;
+  opt.iso = cli::default_iso(r.module, r.grid.voxel);
   r.mesh = sdfrt::mesh::make_mesh(sampler, r.grid, opt, &r.stats);
   return r;
 }

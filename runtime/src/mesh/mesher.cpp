@@ -22,13 +22,14 @@ std::uint8_t encode(float linear, double gamma) {
 Mesh make_mesh(Sampler& sampler, const GridSpec& grid, const MesherOptions& opt, MesherStats* stats) {
   sampler.set_grid(grid);
   MesherStats st;
-  std::vector<std::array<int, 3>> band = find_band(sampler, grid, opt.slack, opt.dense);
+  const double band_iso = opt.iso;
+  std::vector<std::array<int, 3>> band = find_band(sampler, grid, opt.slack, opt.dense, band_iso);
   st.blocks = band.size();
   if (opt.check_memory) opt.check_memory(band.size(), double(band.size()) * kBytesPerBlock);
   // Slabs: the blocks of one x column, so progress moves evenly through the volume.
   std::sort(band.begin(), band.end());
   const int slabs = (grid.dims[0] + kLeafDim - 1) / kLeafDim;
-  LevelSet level_set(grid);
+  LevelSet level_set(grid, band_iso);
   std::size_t at = 0;
   for (int slab = 0; slab < slabs; ++slab) {
     if (opt.cancel && opt.cancel->load()) throw Cancelled();
@@ -42,6 +43,8 @@ Mesh make_mesh(Sampler& sampler, const GridSpec& grid, const MesherOptions& opt,
   }
   st.samples = band.size() * kLeafVoxels;
   st.grid_bytes = level_set.memory_bytes();
+  st.unsigned_field = !(level_set.min_value() < 0);
+  st.iso = band_iso;
   Mesh m = level_set.to_mesh(opt.adaptivity);
   if (opt.colour && !m.vertices.empty()) {
     std::vector<Vec3f> albedo = sampler.albedo(m.vertices);

@@ -27,7 +27,7 @@ bool inside_grid(const GridSpec& g, const Cell& c, int size) {
 
 }  // namespace
 
-std::vector<std::array<int, 3>> find_band(Sampler& sampler, const GridSpec& g, double slack, bool dense) {
+std::vector<std::array<int, 3>> find_band(Sampler& sampler, const GridSpec& g, double slack, bool dense, double iso) {
   std::vector<Cell> cells;
   int size = kTopCell;
   for (int i = 0; i * size < g.dims[0]; ++i)
@@ -44,7 +44,7 @@ std::vector<std::array<int, 3>> find_band(Sampler& sampler, const GridSpec& g, d
       const double reach = slack * std::sqrt(3.0) * g.voxel * (0.5 * (size - 1) + 1.0);
       std::vector<Cell> kept;
       for (std::size_t i = 0; i < cells.size(); ++i)
-        if (!(std::fabs(d[i]) > reach)) kept.push_back(cells[i]);  // NaN: keep, it may hide a surface
+        if (!(std::fabs(d[i] - iso) > reach)) kept.push_back(cells[i]);  // NaN: keep, it may hide a surface
       cells.swap(kept);
     }
     if (size == kLeafDim) return cells;

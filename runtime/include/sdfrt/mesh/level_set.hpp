@@ -10,7 +10,8 @@ namespace sdfrt::mesh {
 
 class LevelSet {
  public:
-  explicit LevelSet(const GridSpec& grid);
+  // iso: the distance the surface is taken at.
+  explicit LevelSet(const GridSpec& grid, double iso = 0);
   ~LevelSet();
   LevelSet(const LevelSet&) = delete;
   LevelSet& operator=(const LevelSet&) = delete;
@@ -19,8 +20,9 @@ class LevelSet {
   void add_block(const std::array<int, 3>& block, const float* samples);
   std::size_t blocks() const;
   std::size_t memory_bytes() const;
-  // volumeToMesh at isovalue 0; adaptivity 0 keeps every polygon, up to 1
-  // merges flat regions. Quads are split into triangles, wound outwards.
+  float min_value() const;  // the smallest sample added, before the iso offset (+inf before any)
+  // volumeToMesh at the iso distance; adaptivity 0 keeps every polygon, up
+  // to 1 merges flat regions. Quads are split into triangles, wound outwards.
   Mesh to_mesh(double adaptivity);
 
  private:

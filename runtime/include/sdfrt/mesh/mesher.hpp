@@ -13,6 +13,7 @@ namespace sdfrt::mesh {
 
 struct MesherOptions {
   double adaptivity = 0;
+  double iso = 0;  // the distance the surface is taken at
   bool colour = false;
   double gamma = 2.2;   // colours are stored encoded, as renders are
   double slack = 1;     // see find_band
@@ -27,6 +28,8 @@ struct MesherStats {
   std::size_t blocks = 0;     // sampled 8x8x8 blocks
   std::size_t samples = 0;    // distance evaluations, the band search included
   std::size_t grid_bytes = 0; // the level set's memory
+  double iso = 0;             // the distance the surface was taken at
+  bool unsigned_field = false; // no sample was negative
 };
 
 // Bytes per sampled block: its samples, the mesher's own per-voxel data and

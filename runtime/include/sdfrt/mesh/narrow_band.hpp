@@ -13,7 +13,9 @@ namespace sdfrt::mesh {
 
 // slack multiplies the half-diagonal test (1 for distance bounds; more for
 // fractal distance estimates, which may overestimate). dense: every block
-// (the baseline the narrow band is measured against).
-std::vector<std::array<int, 3>> find_band(Sampler& sampler, const GridSpec& grid, double slack, bool dense = false);
+// (the baseline the narrow band is measured against). iso: the distance
+// the surface is taken at.
+std::vector<std::array<int, 3>> find_band(Sampler& sampler, const GridSpec& grid, double slack, bool dense = false,
+                                          double iso = 0);
 
 }  // namespace sdfrt::mesh
