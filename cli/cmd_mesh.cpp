@@ -136,6 +136,10 @@ int run_mesh(const MeshArgs& a) {
     if (!a.quiet) {
       bar.emplace("slabs");
       opt.progress = bar->callback();
+      opt.stage = [&](const char* what) {
+        bar->finish();
+        std::cerr << what << " ...\n";
+      };
     }
     sdfrt::mesh::MesherStats st;
     sdfrt::mesh::Mesh mesh = sdfrt::mesh::make_mesh(sampler, grid, opt, &st);
@@ -148,9 +152,9 @@ int run_mesh(const MeshArgs& a) {
                                sequence ? fmt::format("frame {} (t = {:.3f} s): ", fno, grid.time) : "",
                                mesh.triangles.size(), mesh.vertices.size(), describe_bounds(mesh),
                                sdfrt::mesh::volume(mesh), sdfrt::mesh::area(mesh), s);
-      std::cerr << fmt::format("sampled {} blocks: {:.1f} M distances, {:.2f} % of the dense grid's {:.1f} M; level set "
+      std::cerr << fmt::format("sampled {} blocks ({} found beyond the band): {:.1f} M distances, {:.2f} % of the dense grid's {:.1f} M; level set "
                                "{:.1f} MiB\n",
-                               st.blocks, st.samples / 1e6, 100.0 * st.samples / dense, dense / 1e6,
+                               st.blocks, st.grown, st.samples / 1e6, 100.0 * st.samples / dense, dense / 1e6,
                                st.grid_bytes / 1048576.0);
     }
     if (!a.quiet && st.iso != 0 && std::isnan(a.iso))

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_set>
 
 namespace sdfrt::mesh {
 
@@ -30,23 +31,49 @@ Mesh make_mesh(Sampler& sampler, const GridSpec& grid, const MesherOptions& opt,
   std::sort(band.begin(), band.end());
   const int slabs = (grid.dims[0] + kLeafDim - 1) / kLeafDim;
   LevelSet level_set(grid, band_iso);
+  std::unordered_set<std::uint64_t> have, frontier;
+  for (const auto& b : band) have.insert(block_key(b));
+  // a crossing within reach of a block's side continues in the next block
+  const double near = 2 * opt.slack * grid.voxel;
+  auto sample = [&](const std::vector<std::array<int, 3>>& ids) {
+    std::vector<float> samples = sampler.blocks(ids);
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+      const float* v = samples.data() + i * kLeafVoxels;
+      level_set.add_block(ids[i], v);
+      add_frontier(ids[i], v, grid, band_iso, near, have, frontier);
+    }
+  };
   std::size_t at = 0;
   for (int slab = 0; slab < slabs; ++slab) {
     if (opt.cancel && opt.cancel->load()) throw Cancelled();
     std::size_t end = at;
     while (end < band.size() && band[end][0] == slab) ++end;
-    std::vector<std::array<int, 3>> ids(band.begin() + at, band.begin() + end);
-    std::vector<float> samples = sampler.blocks(ids);
-    for (std::size_t i = 0; i < ids.size(); ++i) level_set.add_block(ids[i], samples.data() + i * kLeafVoxels);
+    sample(std::vector<std::array<int, 3>>(band.begin() + at, band.begin() + end));
     at = end;
     if (opt.progress) opt.progress(slab + 1, slabs);
   }
+  // follow the surface out of the band until it closes
+  while (!frontier.empty() && !opt.dense) {
+    if (opt.cancel && opt.cancel->load()) throw Cancelled();
+    std::vector<std::array<int, 3>> ids;
+    for (std::uint64_t k : frontier) {
+      have.insert(k);
+      ids.push_back(block_of_key(k));
+    }
+    frontier.clear();
+    st.grown += ids.size();
+    band.insert(band.end(), ids.begin(), ids.end());
+    sample(ids);
+  }
+  st.blocks = band.size();
   st.samples = band.size() * kLeafVoxels;
   st.grid_bytes = level_set.memory_bytes();
   st.unsigned_field = !(level_set.min_value() < 0);
   st.iso = band_iso;
+  if (opt.stage) opt.stage("meshing");
   Mesh m = level_set.to_mesh(opt.adaptivity);
   if (opt.colour && !m.vertices.empty()) {
+    if (opt.stage) opt.stage("colouring");
     std::vector<Vec3f> albedo = sampler.albedo(m.vertices);
     m.colours.resize(albedo.size());
     for (std::size_t i = 0; i < albedo.size(); ++i)

@@ -60,4 +60,37 @@ std::vector<std::array<int, 3>> find_band(Sampler& sampler, const GridSpec& g, d
   }
 }
 
+std::uint64_t block_key(const std::array<int, 3>& b) {
+  return std::uint64_t(b[0]) << 42 | std::uint64_t(b[1]) << 21 | std::uint64_t(b[2]);
+}
+
+std::array<int, 3> block_of_key(std::uint64_t k) {
+  return {int(k >> 42), int((k >> 21) & 0x1fffff), int(k & 0x1fffff)};
+}
+
+void add_frontier(const std::array<int, 3>& b, const float* v, const GridSpec& g, double iso, double near,
+                  const std::unordered_set<std::uint64_t>& have, std::unordered_set<std::uint64_t>& out) {
+  const int last = kLeafDim - 1;
+  for (int x = 0; x < kLeafDim; ++x)
+    for (int y = 0; y < kLeafDim; ++y)
+      for (int z = 0; z < kLeafDim; ++z) {
+        const bool side = x == 0 || x == last || y == 0 || y == last || z == 0 || z == last;
+        if (!side) continue;
+        const float s = v[(x * kLeafDim + y) * kLeafDim + z];  // OpenVDB's leaf order
+        if (std::fabs(s - iso) > near) continue;  // NaN falls through: it may hide a surface
+        const int lo[3] = {x == 0 ? -1 : 0, y == 0 ? -1 : 0, z == 0 ? -1 : 0};
+        const int hi[3] = {x == last ? 1 : 0, y == last ? 1 : 0, z == last ? 1 : 0};
+        for (int dx = lo[0]; dx <= hi[0]; ++dx)
+          for (int dy = lo[1]; dy <= hi[1]; ++dy)
+            for (int dz = lo[2]; dz <= hi[2]; ++dz) {
+              const std::array<int, 3> n{b[0] + dx, b[1] + dy, b[2] + dz};
+              bool inside = true;
+              for (int a = 0; a < 3; ++a) inside = inside && n[a] >= 0 && n[a] * kLeafDim < g.dims[a];
+              if (!inside || (dx == 0 && dy == 0 && dz == 0)) continue;
+              const std::uint64_t key = block_key(n);
+              if (!have.count(key)) out.insert(key);
+            }
+      }
+}
+
 }  // namespace sdfrt::mesh

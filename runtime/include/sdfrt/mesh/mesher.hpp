@@ -21,11 +21,13 @@ struct MesherOptions {
   // Called once the band is known, with its memory estimate in bytes: throw to stop.
   std::function<void(std::size_t blocks, double bytes)> check_memory;
   std::function<void(int done, int total)> progress;  // slabs
+  std::function<void(const char* stage)> stage;       // "meshing", "colouring": the steps after the slabs
   const std::atomic<bool>* cancel = nullptr;
 };
 
 struct MesherStats {
   std::size_t blocks = 0;     // sampled 8x8x8 blocks
+  std::size_t grown = 0;      // of which found by following the surface out of the band
   std::size_t samples = 0;    // distance evaluations, the band search included
   std::size_t grid_bytes = 0; // the level set's memory
   double iso = 0;             // the distance the surface was taken at

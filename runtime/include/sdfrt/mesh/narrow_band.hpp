@@ -7,6 +7,8 @@
 #include <sdfrt/mesh/sampler.hpp>
 
 #include <array>
+#include <cstdint>
+#include <unordered_set>
 #include <vector>
 
 namespace sdfrt::mesh {
@@ -17,5 +19,16 @@ namespace sdfrt::mesh {
 // the surface is taken at.
 std::vector<std::array<int, 3>> find_band(Sampler& sampler, const GridSpec& grid, double slack, bool dense = false,
                                           double iso = 0);
+
+// The unsampled neighbours of sampled blocks that the surface runs into: a
+// voxel on a block's side within `near` of the iso distance (or NaN) adds
+// the blocks beyond that side. Sampling them, and theirs in turn, follows
+// the surface wherever a distance estimate overstated the distance, so no
+// piece of it is left out of the band (which would open the mesh).
+// `have` holds every block sampled so far, by block_key().
+std::uint64_t block_key(const std::array<int, 3>& b);
+void add_frontier(const std::array<int, 3>& block, const float* samples, const GridSpec& grid, double iso, double near,
+                  const std::unordered_set<std::uint64_t>& have, std::unordered_set<std::uint64_t>& out);
+std::array<int, 3> block_of_key(std::uint64_t key);
 
 }  // namespace sdfrt::mesh
