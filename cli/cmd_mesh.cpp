@@ -86,7 +86,8 @@ int run_mesh(const MeshArgs& a) {
   SourceValue doc = load_scene_source(a.scene.path, a.scene.sets);
   ir::Module m = build_module(doc, a.scene.path);
   const Region region = a.bounds.empty() ? scene_region(m) : parse_bounds(a.bounds);
-  const sdfrt::mesh::GridSpec base = make_grid(region, a.resolution, a.voxel);
+  sdfrt::mesh::GridSpec base = make_grid(region, a.resolution, a.voxel);
+  base.iso = std::isnan(a.iso) ? default_iso(m, base.voxel) : a.iso;
   if (a.colour && !sdfrt::mesh::holds_colour(*format) && !a.quiet)
     std::cerr << "sdfc: warning: STL files hold no colours; --colour is ignored (write .ply or .obj for colours)\n";
 
@@ -106,7 +107,6 @@ int run_mesh(const MeshArgs& a) {
   const double limit = a.memory_limit_gib > 0 ? a.memory_limit_gib * (1u << 30) : default_memory_limit();
   sdfrt::mesh::MesherOptions opt;
   opt.adaptivity = a.adaptivity;
-  opt.iso = std::isnan(a.iso) ? default_iso(m, base.voxel) : a.iso;
   opt.colour = a.colour && sdfrt::mesh::holds_colour(*format);
   opt.gamma = m.plan.march.gamma;
   opt.dense = a.dense;
@@ -157,9 +157,9 @@ int run_mesh(const MeshArgs& a) {
                                st.blocks, st.grown, st.samples / 1e6, 100.0 * st.samples / dense, dense / 1e6,
                                st.grid_bytes / 1048576.0);
     }
-    if (!a.quiet && st.iso != 0 && std::isnan(a.iso))
+    if (!a.quiet && grid.iso != 0 && std::isnan(a.iso))
       std::cerr << fmt::format("note: the surface is taken where the fractal's distance estimate is half a voxel, "
-                               "{:.4g} (--iso sets it)\n", st.iso);
+                               "{:.4g} (--iso sets it)\n", grid.iso);
     if (!a.quiet && mesh.triangles.empty() && st.unsigned_field)
       std::cerr << "note: the mesh is empty: the scene's distance is never negative in these bounds; a positive --iso "
                    "takes the surface at that distance\n";

@@ -126,6 +126,15 @@ TEST(MeshCli, UnboundedSceneAsksForBoundsAndIsCutClosedByThem) {
   auto m = sdfc::test::read_ply(dir.file("f.ply"));
   EXPECT_TRUE(sdfrt::mesh::check_topology(m).watertight());
   EXPECT_NEAR(sdfrt::mesh::volume(m) / 4.0, 1.0, 0.01);  // the lower half of the cube
+  // an offset surface moves the floor, not the cut
+  r = run_sdfc("mesh " + scene + " --bounds -1,-1,-1,1,1,1 --resolution 64 --iso 0.25 -o " + dir.file("g.ply"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  m = sdfc::test::read_ply(dir.file("g.ply"));
+  float lo = 0, hi = 0;
+  for (const auto& v : m.vertices) lo = std::min(lo, v[0]), hi = std::max(hi, v[0]);
+  EXPECT_NEAR(lo, -1.0, 1e-4);
+  EXPECT_NEAR(hi, 1.0, 1e-4);
+  EXPECT_NEAR(sdfrt::mesh::volume(m) / 5.0, 1.0, 0.01);  // 2 x 2 x 1.25
 }
 
 TEST(MeshCli, BadBoundsFailWithWhatWasExpected) {

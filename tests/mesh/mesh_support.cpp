@@ -8,13 +8,13 @@ namespace sdfc::test {
 Meshed mesh_scene(const std::string& yaml, int resolution, std::optional<cli::Region> bounds, bool colour, bool dense) {
   Meshed r{compile_text(yaml), {}, {}, {}};
   r.grid = cli::make_grid(bounds ? *bounds : cli::scene_region(r.module), resolution, 0);
+  r.grid.iso = cli::default_iso(r.module, r.grid.voxel);
   codegen::EmittedKernel k = codegen::emit_mesh_kernels(r.module, 16);
   sdfrt::mesh::Sampler sampler(device(), k.source, 16);
   sdfrt::mesh::MesherOptions opt;
   opt.colour = colour;
   opt.dense = dense;
   opt.gamma = r.module.plan.march.gamma;
-  opt.iso = cli::default_iso(r.module, r.grid.voxel);
   r.mesh = sdfrt::mesh::make_mesh(sampler, r.grid, opt, &r.stats);
   return r;
 }

@@ -12,8 +12,9 @@ namespace sdfc::codegen {
 
 namespace {
 
-// The scene cut to the grid's box: max with the box's exact distance keeps a
-// cut solid closed, and the result is still a distance bound.
+// The scene, offset by the iso distance, cut to the grid's box: max with the
+// box's exact distance keeps a cut solid closed (the cut stays at the box
+// whatever the offset), and the result is still a distance bound.
 const char* kClippedDistance = R"(
 // ---- mesh sampling: the scene distance, cut to the mesh's box ----
 real sdfc_mesh_distance(TIME_PARAM vec3 p, __global const float* g)
@@ -24,7 +25,7 @@ real sdfc_mesh_distance(TIME_PARAM vec3 p, __global const float* g)
     real qz = fabs(p.z - (real)((scalar)(0.5f * (g[6] + g[9])))) - (real)((scalar)(0.5f * (g[9] - g[6])));
     real ox = fmax(qx, (real)(0.0f)), oy = fmax(qy, (real)(0.0f)), oz = fmax(qz, (real)(0.0f));
     real box = sqrt(ox * ox + oy * oy + oz * oz) + fmin(fmax(qx, fmax(qy, qz)), (real)(0.0f));
-    return fmax(d, box);
+    return fmax(d - (real)((scalar)g[11]), box);
 }
 
 __kernel void sdfc_mesh_points(__global const float* px, __global const float* py, __global const float* pz,

@@ -17,15 +17,13 @@ struct LevelSet::Impl {
   openvdb::FloatGrid::Ptr grid;
   float background = 0;
   float min_value = std::numeric_limits<float>::infinity();
-  float iso = 0;
 };
 
-LevelSet::LevelSet(const GridSpec& g, double iso) : impl_(std::make_unique<Impl>()) {
+LevelSet::LevelSet(const GridSpec& g) : impl_(std::make_unique<Impl>()) {
   openvdb::initialize();
   // Wider than any sampled block's reach (half a block diagonal plus a
   // voxel), so clamping never changes a value the mesher interpolates.
   impl_->background = float(2 * kLeafDim * g.voxel);
-  impl_->iso = float(iso);
   impl_->grid = openvdb::FloatGrid::create(impl_->background);
   auto xf = openvdb::math::Transform::createLinearTransform(g.voxel);
   xf->postTranslate(openvdb::Vec3d(g.origin[0], g.origin[1], g.origin[2]));
@@ -40,11 +38,9 @@ void LevelSet::add_block(const std::array<int, 3>& b, const float* samples) {
   float* values = leaf->buffer().data();
   const float bg = impl_->background;
   for (int i = 0; i < kLeafVoxels; ++i) {
-    // stored relative to the iso distance, so the flood fill's inside/outside
-    // sign (taken from the stored values) is the sign that matters
     float v = samples[i];
     if (!std::isnan(v)) impl_->min_value = std::min(impl_->min_value, v);
-    values[i] = std::isnan(v) ? bg : std::clamp(v - impl_->iso, -bg, bg);
+    values[i] = std::isnan(v) ? bg : std::clamp(v, -bg, bg);
   }
   leaf->setValuesOn();
 }

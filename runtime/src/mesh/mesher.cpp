@@ -23,14 +23,13 @@ std::uint8_t encode(float linear, double gamma) {
 Mesh make_mesh(Sampler& sampler, const GridSpec& grid, const MesherOptions& opt, MesherStats* stats) {
   sampler.set_grid(grid);
   MesherStats st;
-  const double band_iso = opt.iso;
-  std::vector<std::array<int, 3>> band = find_band(sampler, grid, opt.slack, opt.dense, band_iso);
+  std::vector<std::array<int, 3>> band = find_band(sampler, grid, opt.slack, opt.dense);
   st.blocks = band.size();
   if (opt.check_memory) opt.check_memory(band.size(), double(band.size()) * kBytesPerBlock);
   // Slabs: the blocks of one x column, so progress moves evenly through the volume.
   std::sort(band.begin(), band.end());
   const int slabs = (grid.dims[0] + kLeafDim - 1) / kLeafDim;
-  LevelSet level_set(grid, band_iso);
+  LevelSet level_set(grid);
   std::unordered_set<std::uint64_t> have, frontier;
   for (const auto& b : band) have.insert(block_key(b));
   // a crossing within reach of a block's side continues in the next block
@@ -40,7 +39,7 @@ Mesh make_mesh(Sampler& sampler, const GridSpec& grid, const MesherOptions& opt,
     for (std::size_t i = 0; i < ids.size(); ++i) {
       const float* v = samples.data() + i * kLeafVoxels;
       level_set.add_block(ids[i], v);
-      add_frontier(ids[i], v, grid, band_iso, near, have, frontier);
+      add_frontier(ids[i], v, grid, near, have, frontier);
     }
   };
   std::size_t at = 0;
@@ -68,8 +67,7 @@ Mesh make_mesh(Sampler& sampler, const GridSpec& grid, const MesherOptions& opt,
   st.blocks = band.size();
   st.samples = band.size() * kLeafVoxels;
   st.grid_bytes = level_set.memory_bytes();
-  st.unsigned_field = !(level_set.min_value() < 0);
-  st.iso = band_iso;
+  st.unsigned_field = !(level_set.min_value() + grid.iso < 0);
   if (opt.stage) opt.stage("meshing");
   Mesh m = level_set.to_mesh(opt.adaptivity);
   if (opt.colour && !m.vertices.empty()) {

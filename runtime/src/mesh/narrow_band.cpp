@@ -27,7 +27,7 @@ bool inside_grid(const GridSpec& g, const Cell& c, int size) {
 
 }  // namespace
 
-std::vector<std::array<int, 3>> find_band(Sampler& sampler, const GridSpec& g, double slack, bool dense, double iso) {
+std::vector<std::array<int, 3>> find_band(Sampler& sampler, const GridSpec& g, double slack, bool dense) {
   std::vector<Cell> cells;
   int size = kTopCell;
   for (int i = 0; i * size < g.dims[0]; ++i)
@@ -44,7 +44,7 @@ std::vector<std::array<int, 3>> find_band(Sampler& sampler, const GridSpec& g, d
       const double reach = slack * std::sqrt(3.0) * g.voxel * (0.5 * (size - 1) + 1.0);
       std::vector<Cell> kept;
       for (std::size_t i = 0; i < cells.size(); ++i)
-        if (!(std::fabs(d[i] - iso) > reach)) kept.push_back(cells[i]);  // NaN: keep, it may hide a surface
+        if (!(std::fabs(d[i]) > reach)) kept.push_back(cells[i]);  // NaN: keep, it may hide a surface
       cells.swap(kept);
     }
     if (size == kLeafDim) return cells;
@@ -68,7 +68,7 @@ std::array<int, 3> block_of_key(std::uint64_t k) {
   return {int(k >> 42), int((k >> 21) & 0x1fffff), int(k & 0x1fffff)};
 }
 
-void add_frontier(const std::array<int, 3>& b, const float* v, const GridSpec& g, double iso, double near,
+void add_frontier(const std::array<int, 3>& b, const float* v, const GridSpec& g, double near,
                   const std::unordered_set<std::uint64_t>& have, std::unordered_set<std::uint64_t>& out) {
   const int last = kLeafDim - 1;
   for (int x = 0; x < kLeafDim; ++x)
@@ -77,7 +77,7 @@ void add_frontier(const std::array<int, 3>& b, const float* v, const GridSpec& g
         const bool side = x == 0 || x == last || y == 0 || y == last || z == 0 || z == last;
         if (!side) continue;
         const float s = v[(x * kLeafDim + y) * kLeafDim + z];  // OpenVDB's leaf order
-        if (std::fabs(s - iso) > near) continue;  // NaN falls through: it may hide a surface
+        if (std::fabs(s) > near) continue;  // NaN falls through: it may hide a surface
         const int lo[3] = {x == 0 ? -1 : 0, y == 0 ? -1 : 0, z == 0 ? -1 : 0};
         const int hi[3] = {x == last ? 1 : 0, y == last ? 1 : 0, z == last ? 1 : 0};
         for (int dx = lo[0]; dx <= hi[0]; ++dx)

@@ -48,7 +48,7 @@ Sampler::Sampler(Device& device, const std::string& source, int simd_width, Buil
 void Sampler::set_grid(const GridSpec& g) {
   grid_ = {float(g.origin[0]),  float(g.origin[1]),  float(g.origin[2]),  float(g.voxel),
            float(g.clip_lo[0]), float(g.clip_lo[1]), float(g.clip_lo[2]), float(g.clip_hi[0]),
-           float(g.clip_hi[1]), float(g.clip_hi[2]), float(g.time)};
+           float(g.clip_hi[1]), float(g.clip_hi[2]), float(g.time), float(g.iso)};
 }
 
 // planes: 1 (distance) or 3 (colour, which also takes the padded count n).

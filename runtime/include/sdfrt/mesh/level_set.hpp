@@ -10,8 +10,7 @@ namespace sdfrt::mesh {
 
 class LevelSet {
  public:
-  // iso: the distance the surface is taken at.
-  explicit LevelSet(const GridSpec& grid, double iso = 0);
+  explicit LevelSet(const GridSpec& grid);
   ~LevelSet();
   LevelSet(const LevelSet&) = delete;
   LevelSet& operator=(const LevelSet&) = delete;
@@ -20,9 +19,9 @@ class LevelSet {
   void add_block(const std::array<int, 3>& block, const float* samples);
   std::size_t blocks() const;
   std::size_t memory_bytes() const;
-  float min_value() const;  // the smallest sample added, before the iso offset (+inf before any)
-  // volumeToMesh at the iso distance; adaptivity 0 keeps every polygon, up
-  // to 1 merges flat regions. Quads are split into triangles, wound outwards.
+  float min_value() const;  // the smallest sample added (+inf before any)
+  // volumeToMesh at 0 (the samples already hold the iso offset); adaptivity
+  // 0 keeps every polygon, up to 1 merges flat regions. Quads are split into triangles, wound outwards.
   Mesh to_mesh(double adaptivity);
 
  private:

@@ -15,6 +15,7 @@ struct GridSpec {
   std::array<int, 3> dims{8, 8, 8};
   std::array<double, 3> clip_lo{0, 0, 0}, clip_hi{0, 0, 0};
   double time = 0;  // the frame time of an animated scene
+  double iso = 0;   // the surface is taken at this distance from the scene's
 };
 inline constexpr int kLeafDim = 8;  // voxels per side of a sampled block
 inline constexpr int kLeafVoxels = kLeafDim * kLeafDim * kLeafDim;

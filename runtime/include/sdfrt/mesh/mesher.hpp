@@ -13,7 +13,6 @@ namespace sdfrt::mesh {
 
 struct MesherOptions {
   double adaptivity = 0;
-  double iso = 0;  // the distance the surface is taken at
   bool colour = false;
   double gamma = 2.2;   // colours are stored encoded, as renders are
   double slack = 1;     // see find_band
@@ -30,7 +29,6 @@ struct MesherStats {
   std::size_t grown = 0;      // of which found by following the surface out of the band
   std::size_t samples = 0;    // distance evaluations, the band search included
   std::size_t grid_bytes = 0; // the level set's memory
-  double iso = 0;             // the distance the surface was taken at
   bool unsigned_field = false; // no sample was negative
 };
 
