@@ -5,7 +5,8 @@
 
 namespace sdfc::test {
 
-Meshed mesh_scene(const std::string& yaml, int resolution, std::optional<cli::Region> bounds, bool colour, bool dense) {
+Meshed mesh_scene(const std::string& yaml, int resolution, std::optional<cli::Region> bounds, bool colour, bool dense,
+                  double adaptivity) {
   Meshed r{compile_text(yaml), {}, {}, {}};
   r.grid = cli::make_grid(bounds ? *bounds : cli::scene_region(r.module), resolution, 0);
   r.grid.iso = cli::default_iso(r.module, r.grid.voxel);
@@ -14,6 +15,7 @@ Meshed mesh_scene(const std::string& yaml, int resolution, std::optional<cli::Re
   sdfrt::mesh::MesherOptions opt;
   opt.colour = colour;
   opt.dense = dense;
+  opt.adaptivity = adaptivity;
   opt.gamma = r.module.plan.march.gamma;
   r.mesh = sdfrt::mesh::make_mesh(sampler, r.grid, opt, &r.stats);
   return r;

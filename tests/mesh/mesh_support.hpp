@@ -21,6 +21,6 @@ struct Meshed {
 
 // bounds: the scene's inferred bounds when empty.
 Meshed mesh_scene(const std::string& yaml, int resolution, std::optional<cli::Region> bounds = std::nullopt,
-                  bool colour = false, bool dense = false);
+                  bool colour = false, bool dense = false, double adaptivity = 0);
 
 }  // namespace sdfc::test

@@ -42,6 +42,29 @@ TEST(MeshShapes, TorusHasGenusOneAndIsWatertight) {
   EXPECT_NEAR(sdfrt::mesh::volume(r.mesh) / (2 * kPi * kPi * 1.0 * 0.09), 1.0, 0.02);
 }
 
+TEST(MeshShapes, AdaptivityMergesPolygonsAndKeepsTheTorusClosed) {
+  const char* torus = "scene: {torus: {major_radius: 1, minor_radius: 0.3}}\n";
+  auto fine = mesh_scene(torus, 96);
+  auto merged = mesh_scene(torus, 96, std::nullopt, false, false, 0.5);
+  EXPECT_LT(merged.mesh.triangles.size(), fine.mesh.triangles.size() / 2);
+  expect_closed_and_oriented(merged.mesh);
+  EXPECT_EQ(sdfrt::mesh::check_topology(merged.mesh).euler, 0);
+  // merged polygons cut across curved parts: about 10 % of the volume here
+  EXPECT_NEAR(sdfrt::mesh::volume(merged.mesh) / (2 * kPi * kPi * 1.0 * 0.09), 1.0, 0.15);
+  EXPECT_NEAR(sdfrt::mesh::volume(fine.mesh) / (2 * kPi * kPi * 1.0 * 0.09), 1.0, 0.01);
+}
+
+// The narrow band samples fewer distances than the dense grid and gives
+// the same mesh.
+TEST(MeshShapes, NarrowBandGivesTheDenseGridsMesh) {
+  const char* yaml = "scene: {smooth_union: {radius: 0.3, children: [{sphere: {}}, {box: {size: [1, 1, 3]}}]}}\n";
+  auto band = mesh_scene(yaml, 64);
+  auto dense = mesh_scene(yaml, 64, std::nullopt, false, true);
+  EXPECT_LT(band.stats.samples, dense.stats.samples / 2);
+  EXPECT_EQ(band.mesh.triangles.size(), dense.mesh.triangles.size());
+  EXPECT_NEAR(sdfrt::mesh::volume(band.mesh), sdfrt::mesh::volume(dense.mesh), 1e-9);
+}
+
 // A box with a spherical bite and a bar through it, against the
 // reference evaluator's inside/outside on a dense grid of points.
 TEST(MeshShapes, CsgSceneMatchesBruteForceDenseSampling) {
