@@ -91,6 +91,36 @@ TEST(MeshCli, OrbitTrapColoursVaryOverAFractal) {
   EXPECT_GT(distinct.size(), 50u);  // the palette, not one flat material colour
 }
 
+// A smooth union of two materials: the colour of the kernel's blended
+// material record, pure on the far sides and mixed at the seam.
+TEST(MeshCli, BlendedMaterialsMixAtTheSeam) {
+  ScratchDir dir;
+  std::string scene = dir.write("blend.yaml", R"(materials:
+  red: {color: [0.8, 0.1, 0.1]}
+  blue: {color: [0.1, 0.2, 0.9]}
+scene:
+  smooth_union:
+    radius: 0.4
+    children:
+      - {sphere: {radius: 0.5}, translate: [-0.4, 0, 0], material: red}
+      - {sphere: {radius: 0.5}, translate: [0.4, 0, 0], material: blue}
+)");
+  auto r = run_sdfc("mesh " + scene + " --resolution 48 --colour -o " + dir.file("b.ply"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  auto m = sdfc::test::read_ply(dir.file("b.ply"));
+  int far_red = 0, far_blue = 0, seam = 0;
+  for (size_t i = 0; i < m.vertices.size(); ++i) {
+    const float x = m.vertices[i][0];
+    const auto& c = m.colours[i];
+    if (x < -0.8f) far_red += c[0] > 200 && c[2] < 120;
+    if (x > 0.8f) far_blue += c[2] > 200 && c[0] < 120;
+    if (std::fabs(x) < 0.02f) seam += c[0] > 140 && c[0] < 210 && c[2] > 150 && c[2] < 220;
+  }
+  EXPECT_GT(far_red, 10);
+  EXPECT_GT(far_blue, 10);
+  EXPECT_GT(seam, 10);
+}
+
 TEST(MeshCli, StlWarnsThatItHoldsNoColour) {
   ScratchDir dir;
   auto r = run_sdfc("mesh " + dir.write("s.yaml", kSphere) + " --resolution 16 --colour -o " + dir.file("s.stl"));
