@@ -18,5 +18,6 @@ Action add_audit(CLI::App& app);
 Action add_compare(CLI::App& app);
 Action add_merge(CLI::App& app);  // cmd_merge.cpp: a still's region files into its image
 Action add_farm(CLI::App& app);   // cmd_farm.cpp: Slurm job scripts
+Action add_mesh(CLI::App& app);
 
 }  // namespace sdfc::cli

@@ -38,6 +38,7 @@ int main(int argc, char** argv) {
   reg(add_compare);
   reg(add_merge);
   reg(add_farm);
+  reg(add_mesh);
 
   try {
     app.parse(argc, argv);
