@@ -240,7 +240,7 @@ Action add_render(CLI::App& app) {
                 "Coverage as alpha, the background left out (as render.alpha: true): straight alpha in PNG, "
                 "premultiplied in EXR");
   cmd->add_option("--quality", a->quality,
-                  "JPEG quality 1-100 (default 90); for video the CRF, lower is better (H.264 0-51, default 20; "
+                  "JPEG quality 1-100 (default 90); for video the CRF, lower is better (H.264 0-51, default 18; "
                   "VP9 0-63, default 32)")
       ->check(CLI::Range(0, 100));
   cmd->add_option("--number-from", a->number_from,

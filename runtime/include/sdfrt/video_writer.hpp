@@ -47,7 +47,7 @@ class VideoWriter {
   WriteReport finish_as(const std::string& path);
 
   // Default CRF of each codec.
-  static int default_crf(VideoContainer c) { return c == VideoContainer::WebM ? 32 : 20; }
+  static int default_crf(VideoContainer c) { return c == VideoContainer::WebM ? 32 : 18; }
 
  private:
   struct Impl;
