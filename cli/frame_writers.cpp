@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sdfrt/stream_writers.hpp>
 #include <sdfrt/video_writer.hpp>
@@ -65,7 +66,6 @@ class ImageSink final : public FrameSink {
       case Format::Exr: beauty_ = sdfrt::open_exr_writer(out.beauty, w, h, exr_channels(spec, out)); break;
       default: throw std::logic_error("ImageSink for a video format");
     }
-    path_ = out.beauty;
   }
   void write_band(const sdfrt::FloatImage& band) override {
     beauty_->write_band(hit_ >= 0 ? straight_rgba(band, hit_, gamma_) : band);
@@ -84,7 +84,6 @@ class ImageSink final : public FrameSink {
   AovWriters aovs_;
   float gamma_;
   int hit_;
-  std::string path_;
 };
 
 // One frame of the video the whole render goes to.
