@@ -95,7 +95,8 @@ TEST(ImageFormats, ExrChannelsEqualThePfmAovsOfTheSameRender) {
   const std::string s = dir.write("s.yaml", kScene);
   const std::string aovs = " --aov depth,normal,steps,iterations,material,hit -q";
   ASSERT_EQ(sdfc::test::run_sdfc("render " + s + aovs + " -o " + dir.file("p.png")).code, 0);
-  RunResult r = sdfc::test::run_sdfc("render " + s + aovs + " --bit-depth 32 -o " + dir.file("f.exr"));
+  // in bands of 16 rows (--tile 16): every band lands on its own rows
+  RunResult r = sdfc::test::run_sdfc("render " + s + aovs + " --bit-depth 32 --tile 16 -o " + dir.file("f.exr"));
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(r.out, dir.file("f.exr") + "\n") << "one file, no PFMs beside it";
   r = sdfc::test::run_sdfc("render " + s + aovs + " --alpha -o " + dir.file("h.exr"));

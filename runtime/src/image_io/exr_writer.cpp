@@ -65,39 +65,12 @@ class ExrBandWriter final : public BandWriter {
     guarded([&] { exr_.emplace(stream_, header); });
   }
 
+  // Converted and handed over in chunks of kChunkRows, so the half/float
+  // copies stay a few MiB even for 16384-pixel rows.
   void write_band(const FloatImage& band) override {
     if (band.width != width_ || rows_ + band.height > height_)
       throw std::invalid_argument("EXR band does not fit the image");
-    const std::size_t n = band.plane_size();
-    halves_.resize(channels_.size());
-    floats_.resize(channels_.size());
-    Imf::FrameBuffer fb;
-    // OpenEXR addresses a slice by absolute row: shift the base so that row
-    // `rows_` lands on the band's first row.
-    const std::size_t shift = std::size_t(rows_) * std::size_t(width_);
-    for (std::size_t k = 0; k < channels_.size(); ++k) {
-      const auto& c = channels_[k];
-      auto plane = band.plane(c.plane);
-      if (c.half) {
-        halves_[k].resize(n);
-        for (std::size_t i = 0; i < n; ++i) {
-          const float v = finite_or_zero(plane[i], report_.nonfinite_samples);
-          halves_[k][i] = half(std::clamp(v, -kHalfMax, kHalfMax));
-        }
-        fb.insert(c.name, Imf::Slice(Imf::HALF, reinterpret_cast<char*>(halves_[k].data() - shift), sizeof(half),
-                                     sizeof(half) * std::size_t(width_)));
-      } else {
-        floats_[k].resize(n);
-        for (std::size_t i = 0; i < n; ++i) floats_[k][i] = finite_or_zero(plane[i], report_.nonfinite_samples);
-        fb.insert(c.name, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(floats_[k].data() - shift), sizeof(float),
-                                     sizeof(float) * std::size_t(width_)));
-      }
-    }
-    guarded([&] {
-      exr_->setFrameBuffer(fb);
-      exr_->writePixels(band.height);
-    });
-    rows_ += band.height;
+    for (int y0 = 0; y0 < band.height; y0 += kChunkRows) write_rows(band, y0, std::min(kChunkRows, band.height - y0));
   }
 
   WriteReport finish() override {
@@ -122,6 +95,42 @@ class ExrBandWriter final : public BandWriter {
   }
 
  private:
+  static constexpr int kChunkRows = 16;  // ZIP compresses blocks of 16 lines
+
+  // Rows [y0, y0 + rows) of the band become the file's next rows.
+  void write_rows(const FloatImage& band, int y0, int rows) {
+    const std::size_t n = std::size_t(rows) * std::size_t(width_), first = std::size_t(y0) * std::size_t(width_);
+    halves_.resize(channels_.size());
+    floats_.resize(channels_.size());
+    Imf::FrameBuffer fb;
+    // OpenEXR addresses a slice by absolute row: shift the base so that row
+    // `rows_` lands on the chunk's first row.
+    const std::size_t shift = std::size_t(rows_) * std::size_t(width_);
+    for (std::size_t k = 0; k < channels_.size(); ++k) {
+      const auto& c = channels_[k];
+      auto plane = band.plane(c.plane).subspan(first, n);
+      if (c.half) {
+        halves_[k].resize(n);
+        for (std::size_t i = 0; i < n; ++i) {
+          const float v = finite_or_zero(plane[i], report_.nonfinite_samples);
+          halves_[k][i] = half(std::clamp(v, -kHalfMax, kHalfMax));
+        }
+        fb.insert(c.name, Imf::Slice(Imf::HALF, reinterpret_cast<char*>(halves_[k].data() - shift), sizeof(half),
+                                     sizeof(half) * std::size_t(width_)));
+      } else {
+        floats_[k].resize(n);
+        for (std::size_t i = 0; i < n; ++i) floats_[k][i] = finite_or_zero(plane[i], report_.nonfinite_samples);
+        fb.insert(c.name, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(floats_[k].data() - shift), sizeof(float),
+                                     sizeof(float) * std::size_t(width_)));
+      }
+    }
+    guarded([&] {
+      exr_->setFrameBuffer(fb);
+      exr_->writePixels(rows);
+    });
+    rows_ += rows;
+  }
+
   WriteReport commit(const std::string* other_path) {
     exr_.reset();  // writes the line offset table
     stream_.rethrow_error();
