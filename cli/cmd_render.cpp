@@ -112,6 +112,9 @@ int run_render(RenderArgs a) {
   const OutputChoices choices =
       resolve_choices(format, {a.bit_depth, a.quality, a.alpha || m.plan.march.alpha}, !a.aovs.empty());
   if (a.repeat > 0 && format != Format::Png) throw std::invalid_argument("--repeat writes a PNG: name the output .png");
+  if (is_video(format) && (m.plan.march.width % 2 || m.plan.march.height % 2))
+    throw std::invalid_argument(fmt::format("a video needs an even width and height (yuv420p), not {}x{}",
+                                            m.plan.march.width, m.plan.march.height));
 
   std::signal(SIGABRT, on_driver_abort);
   sdfrt::Device device = sdfrt::open_device(a.device.empty() ? std::nullopt : std::optional<std::string>(a.device));
