@@ -25,6 +25,10 @@ namespace {
 // it renders all samples in one pass, streamed (and says so).
 constexpr std::size_t kMaxAccumulatorBytes = std::size_t(1) << 30;
 
+// The formats a stopped render can leave a partial image in (JPEG and PFM
+// keep nothing; a video keeps its finished frames, see video_output.cpp).
+bool keeps_partial(Format f) { return f == Format::Png || f == Format::Exr; }
+
 int tiles_in(int width, int rows, int tile) { return ((width + tile - 1) / tile) * ((rows + tile - 1) / tile); }
 
 // Renders one frame band by band; the renderer hands over the band with the
@@ -59,8 +63,9 @@ class BandLoop {
         progress_.finish();
         if (!is_video(out_.format))  // a video says what it keeps (video_output.cpp)
           std::cerr << fmt::format("sdfc: stopped; {} was not written{}\n", out_.beauty,
-                                 out_.keep_partial ? "" : fmt::format(" (--keep-partial keeps the tiles done in {})",
-                                                                      partial_path(out_.beauty)));
+                                 out_.keep_partial || !keeps_partial(out_.format)
+                                     ? ""
+                                     : fmt::format(" (--keep-partial keeps the tiles done in {})", partial_path(out_.beauty)));
         if (out_.keep_partial) stopped(y0);
         throw;
       }
@@ -85,7 +90,7 @@ class BandLoop {
 
 // A partial file from an earlier, interrupted run of the same output is stale now.
 void remove_stale_partial(const OfflineOutput& out) {
-  if (!out.keep_partial || is_video(out.format)) return;
+  if (!out.keep_partial || !keeps_partial(out.format)) return;
   std::error_code ec;
   std::filesystem::remove(partial_path(out.beauty), ec);
 }
@@ -114,7 +119,7 @@ std::vector<std::string> render_offline(sdfrt::Renderer& renderer, const Offline
     loop.run(
         f.frame, [&](const sdfrt::FloatImage& band, int) { sink->write_band(band); },
         [&](int) {
-          if (is_video(out.format)) return;  // the video keeps the frames done
+          if (!keeps_partial(out.format)) return;
           // The bands streamed so far, this band's finished tiles, black below.
           sink->write_band(loop.stopped_band());
           std::cerr << fmt::format("sdfc: partial image: {} ({}; the rest is black)\n", sink->finish_partial(partial),
@@ -138,7 +143,7 @@ std::vector<std::string> render_offline(sdfrt::Renderer& renderer, const Offline
     loop.run(
         frame, [&](const sdfrt::FloatImage& band, int y0) { mean.add(band, y0); },
         [&](int y0) {
-          if (is_video(out.format)) return;
+          if (!keeps_partial(out.format)) return;
           // In the first pass the unfinished tiles stay black; later, the
           // band keeps the mean of the passes before.
           if (pass == 0) mean.add(loop.stopped_band(), y0);
@@ -149,7 +154,7 @@ std::vector<std::string> render_offline(sdfrt::Renderer& renderer, const Offline
                                    pass == 0 ? ", the tiles not done are black" : ", one more above the stop");
         });
     mean.end_pass();
-    if (out.keep_partial && pass + 1 < passes && !is_video(out.format)) {
+    if (out.keep_partial && pass + 1 < passes && keeps_partial(out.format)) {
       // Refreshed after every pass, to watch the image refine.
       auto sink = open_sink();
       stream_mean(*sink);
