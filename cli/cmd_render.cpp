@@ -1,6 +1,7 @@
-// sdfc render SCENE -o OUT.png: compile, build on the device once, render
-// one frame or a sequence (--frames) by tiles with progress on stderr, and
-// write the PNG (8 or 16 bit) and any AOVs through temporary files.
+// sdfc render SCENE -o OUT: compile, build on the device once, render one
+// frame or a sequence (--frames) by tiles with progress on stderr, and write
+// the image (PNG, EXR, PFM, JPEG) or video (MP4, MKV, WebM) the name asks
+// for, and any AOVs, through temporary files.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -10,6 +11,7 @@
 #include <csignal>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <unistd.h>
 #include <sdfrt/device.hpp>
@@ -22,6 +24,8 @@
 #include "farm_render.hpp"
 #include "offline_render.hpp"
 #include "commands.hpp"
+#include "output_format.hpp"
+#include "video_output.hpp"
 #include "sdfc/compile.hpp"
 
 namespace sdfc::cli {
@@ -54,7 +58,11 @@ struct RenderArgs {
   int repeat = 0;
   bool quiet = false;
   bool keep_partial = false;
-  int bit_depth = 8;
+  int bit_depth = 0;  // the format's default
+  std::string format;
+  int quality = -1;
+  bool alpha = false;
+  std::string number_from = "first";
   std::vector<std::string> aovs;
   std::string frames;
   double fps = 30;
@@ -101,6 +109,19 @@ int run_render(RenderArgs a) {
   SourceValue doc = load_scene_source(a.scene.path, a.scene.sets);
   ir::Module m = build_module(doc, a.scene.path);
   if (a.reference) make_reference(m.plan.march, a.reference_epsilon, a.reference_samples, a.aovs);
+  // The output's kind and its options are checked before the kernel builds.
+  // A part of a still (--region, --parts) is a region file of display values, merged into a PNG.
+  const Format format = a.farm.splits_still() ? Format::Png : output_format(a.output, a.format);
+  const OutputChoices choices =
+      resolve_choices(format, {a.bit_depth, a.quality, a.alpha || m.plan.march.alpha}, !a.aovs.empty());
+  if (a.farm.splits_still() && choices.alpha)
+    throw std::invalid_argument("a region file carries no alpha: render the still whole for --alpha");
+  if (is_video(format) && !a.farm.shard.empty())
+    throw std::invalid_argument("--shard splits a frame sequence or a still's parts, not a video: render image frames");
+  if (a.repeat > 0 && format != Format::Png) throw std::invalid_argument("--repeat writes a PNG: name the output .png");
+  if (is_video(format) && (m.plan.march.width % 2 || m.plan.march.height % 2))
+    throw std::invalid_argument(fmt::format("a video needs an even width and height (yuv420p), not {}x{}",
+                                            m.plan.march.width, m.plan.march.height));
 
   std::signal(SIGABRT, on_driver_abort);
   sdfrt::Device device = sdfrt::open_device(a.device.empty() ? std::nullopt : std::optional<std::string>(a.device));
@@ -112,7 +133,9 @@ int run_render(RenderArgs a) {
   codegen::EmitOptions eo;
   eo.simd_width = width;
   eo.packet_rows = a.packet_rows;
-  eo.aovs = !a.aovs.empty();
+  eo.aovs = !a.aovs.empty() || choices.alpha;  // alpha is the hit plane
+  eo.alpha = choices.alpha;
+  eo.linear = format == Format::Exr;
   codegen::EmittedKernel k = codegen::emit_opencl(m, eo);
   if (!a.kernel_file.empty()) k.source = read_kernel_file(a.kernel_file);
   sdfrt::KernelSpec spec{k.source, k.entry, k.simd_width, k.packet_rows, k.planes, ""};
@@ -157,18 +180,33 @@ int run_render(RenderArgs a) {
 
   std::vector<int> frames = a.frames.empty() ? std::vector<int>{0} : parse_frames(a.frames);
   const bool sequence = !a.frames.empty();
-  if (sequence && frames.size() > 1 && !has_frame_field(a.output))
+  const bool video = is_video(format);
+  if (video && has_frame_field(a.output))
+    throw std::invalid_argument(fmt::format("-o '{}': a video is one file; drop the frame-number field", a.output));
+  sequence_number(frames, 0, a.number_from);  // checks --number-from
+  if (!video && sequence && frames.size() > 1 && !has_frame_field(a.output))
     throw std::invalid_argument(fmt::format(
         "-o '{}': {} frames need a frame-number field in the name, e.g. out/frame_%04d.png", a.output, frames.size()));
   OfflineOutput out;
-  out.bit_depth = a.bit_depth;
+  out.format = format;
+  out.bit_depth = choices.bit_depth;
+  out.quality = choices.quality;
+  out.alpha = choices.alpha;
   out.aovs = a.aovs;
-  out.quiet = a.quiet;
+  out.quiet = a.quiet || video;  // a video shows frames done, not tiles
   out.keep_partial = a.keep_partial;
   if (a.farm.splits_still()) return render_still_parts({&renderer, &m.plan, w, h, a.tile, out, a.output, &g_cancel}, a.farm);
+  std::optional<VideoOutput> vid;
+  if (video) {
+    vid.emplace(a.output, format, w, h, a.fps, choices.quality, static_cast<int>(frames.size()), a.quiet);
+    out.video = vid->writer();
+  }
+  std::size_t i = 0;  // fno's place in the whole --frames list, for --number-from
   for (int fno : a.farm.frames_of_task(frames, sequence)) {
+    while (i + 1 < frames.size() && frames[i] != fno) ++i;
     const double time = fno / a.fps;
-    out.beauty = sequence && has_frame_field(a.output) ? frame_path(a.output, fno) : a.output;
+    out.beauty = sequence && has_frame_field(a.output) ? frame_path(a.output, sequence_number(frames, i, a.number_from))
+                                                       : a.output;
     if (a.farm.skip_done_frame(out, fno)) continue;
     // A sequence's directory is created (out/frame_%04d.png); a single image's is not.
     auto parent = std::filesystem::path(out.beauty).parent_path();
@@ -179,23 +217,50 @@ int run_render(RenderArgs a) {
     }
     OfflineFrame f{codegen::frame_params(m.plan, w, h, time), w, h, m.plan.march.samples, m.plan.march.gamma};
     auto start = std::chrono::steady_clock::now();
-    std::vector<std::string> paths = render_offline(renderer, f, out, a.tile, &g_cancel);
+    std::vector<std::string> paths;
+    try {
+      paths = render_offline(renderer, f, out, a.tile, &g_cancel);
+    } catch (const sdfrt::Cancelled&) {
+      if (vid) vid->stopped(a.keep_partial);
+      throw;
+    }
+    if (vid) {
+      vid->frame_done();
+      continue;
+    }
     double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if (!a.quiet)
       std::cerr << fmt::format("{}rendered {}x{} in {:.0f} ms\n", sequence ? fmt::format("frame {} (t = {:.3f} s): ", fno, time) : "",
                                w, h, ms);
     for (const auto& p : paths) std::cout << p << "\n";
   }
+  if (vid) std::cout << vid->finish() << "\n";
   return kOk;
 }
 
 }  // namespace
 
 Action add_render(CLI::App& app) {
-  auto* cmd = app.add_subcommand("render", "Render a scene to a PNG on an OpenCL device");
+  auto* cmd = app.add_subcommand("render", "Render a scene to an image or a video on an OpenCL device");
   auto a = std::make_shared<RenderArgs>();
   a->scene.add_to(*cmd);
-  cmd->add_option("-o,--output", a->output, "Output PNG (a pattern such as out/frame_%04d.png with --frames)")->required();
+  cmd->add_option("-o,--output", a->output,
+                  "Output file; its extension picks the format: .png, .exr, .pfm, .jpg, or with --frames a video "
+                  ".mp4, .mkv, .webm, or an image pattern such as out/frame_%04d.png")
+      ->required();
+  cmd->add_option("--format", a->format, "Write this format whatever the extension: png, exr, pfm, jpg, mp4, mkv, webm")
+      ->check(CLI::IsMember(format_names()));
+  cmd->add_flag("--alpha", a->alpha,
+                "Coverage as alpha, the background left out (as render.alpha: true): straight alpha in PNG, "
+                "premultiplied in EXR");
+  cmd->add_option("--quality", a->quality,
+                  "JPEG quality 1-100 (default 90); for video the CRF, lower is better (H.264 0-51, default 18; "
+                  "VP9 0-63, default 32)")
+      ->check(CLI::Range(0, 100));
+  cmd->add_option("--number-from", a->number_from,
+                  "Sequence file numbers: 'first' (default) counts output frames up from FIRST of --frames, '0' from 0; "
+                  "either way without gaps when STEP > 1")
+      ->check(CLI::IsMember({"0", "first"}));
   cmd->add_option("--width", a->width, "Image width (overrides render.width)")->check(CLI::Range(1, 16384));
   cmd->add_option("--height", a->height, "Image height (overrides render.height)")->check(CLI::Range(1, 16384));
   cmd->add_option("--device", a->device, "Device id from 'sdfc devices' (P:D, an index or part of the name); "
@@ -210,10 +275,13 @@ Action add_render(CLI::App& app) {
       ->check(CLI::Range(1, 1000));
   cmd->add_flag("-q,--quiet", a->quiet, "No progress or timing on stderr");
   cmd->add_flag("--keep-partial", a->keep_partial,
-                "On Ctrl-C, write the tiles done so far to OUT.partial.png (the rest black; OUT.png is never "
-                "written then); with render.samples > 1 it is also refreshed after each pass");
-  cmd->add_option("--bit-depth", a->bit_depth, "PNG bits per channel: 8 or 16")->check(CLI::IsMember({8, 16}));
-  cmd->add_option("--aov", a->aovs, "Also write these as PFM beside the image (OUT.<aov>.pfm): depth, normal, steps, iterations, material, hit")
+                "On Ctrl-C, write the tiles done so far to OUT.partial.png (or .exr; the rest black; OUT is never "
+                "written then), or a video's finished frames to OUT.partial.mp4; with render.samples > 1 the "
+                "image is also refreshed after each pass");
+  cmd->add_option("--bit-depth", a->bit_depth, "Bits per channel: PNG 8 (default) or 16; EXR 16 (half, default) or 32 (float)")
+      ->check(CLI::IsMember({8, 16, 32}));
+  cmd->add_option("--aov", a->aovs, "Also write these: as channels of an EXR (Z, N.X/N.Y/N.Z, steps, iterations, material, hit), "
+                                    "else as PFM beside the image (OUT.<aov>.pfm): depth, normal, steps, iterations, material, hit")
       ->delimiter(',')
       ->check(CLI::IsMember(kAovNames));
   cmd->add_option("--frames", a->frames, "Render frames N, FIRST:LAST or FIRST:LAST:STEP at time = frame / fps; "

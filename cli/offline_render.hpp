@@ -4,8 +4,11 @@
 // stays bounded at any size up to 16384x16384. With render.samples > 1 the
 // samples are rendered pass by pass into a running mean. The final name is
 // written once, complete; a cancelled render leaves it untouched and, only
-// when asked (keep_partial), writes what was done to <stem>.partial.png.
+// when asked (keep_partial), writes what was done to <stem>.partial.<ext>.
 #include <sdfrt/renderer.hpp>
+#include <sdfrt/video_writer.hpp>
+
+#include "output_format.hpp"
 
 #include <sdfrt/stream_writers.hpp>
 
@@ -18,14 +21,18 @@
 namespace sdfc::cli {
 
 struct OfflineOutput {
-  std::string beauty;              // PNG path
-  int bit_depth = 8;               // 8 or 16
+  std::string beauty;              // the image's path (unused for a video frame)
+  Format format = Format::Png;     // EXR gets the kernel's linear colour, the rest display values
+  int bit_depth = 8;               // resolved by resolve_choices
+  int quality = -1;                // JPEG quality
+  bool alpha = false;              // the kernel leaves misses out of the colour; the hit plane is alpha
   std::vector<std::string> aovs;   // of kAovNames
+  sdfrt::VideoWriter* video = nullptr;  // video formats: where every frame goes
   bool quiet = false;
   // On cancel, write the tiles done so far to partial_path(beauty) (the
   // rest black); with several samples it is also refreshed after each pass.
   bool keep_partial = false;
-  // When set, the bands go here instead of the PNG and PFM files (a still's
+  // When set, the bands go here instead of the format's files (a still's
   // region file, cli/region_render.cpp): called with "" for the image, else
   // an AOV's name, and the kernel planes it takes.
   std::function<std::unique_ptr<sdfrt::BandWriter>(const std::string& aov, int width, int height, std::vector<int> planes)>
@@ -69,7 +76,13 @@ std::vector<int> parse_frames(const std::string& spec);
 
 // Expands the one printf-style integer field ("%d", "%04d") of a sequence
 // pattern; throws std::invalid_argument if there is none or more than one.
+// The number is the output frame's: see sequence_number.
 std::string frame_path(const std::string& pattern, int frame);
 bool has_frame_field(const std::string& pattern);
+
+// --number-from: "0" numbers the output frames 0, 1, 2, ...; "first" (the
+// default) FIRST, FIRST+1, ... whatever the STEP, so %04d patterns have no
+// gaps. Throws std::invalid_argument for anything else.
+int sequence_number(const std::vector<int>& frames, std::size_t index, const std::string& number_from);
 
 }  // namespace sdfc::cli

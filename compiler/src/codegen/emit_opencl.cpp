@@ -231,7 +231,8 @@ std::string radiance_function(const ir::Module& m, std::set<std::string>& used) 
   return w.take();
 }
 
-std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std::string>& used, bool aovs) {
+std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std::string>& used, const EmitOptions& opt) {
+  const bool aovs = opt.aovs;
   const ir::MarchSettings& s = m.plan.march;
   const ir::Camera& cam = m.plan.camera;
   const bool sampled = s.samples > 1 || cam.aperture > 0;
@@ -259,14 +260,16 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
   w.line("vec3 normal;");
   std::string post;  // per-sample exposure and tone curve
   if (s.exposure != 0) post += fmt::format("c = v3_scale(c, {});  // render.exposure: {} stop(s)\n", lit.real(std::exp2(s.exposure)), s.exposure);
-  if (s.tone_mapping == ir::MarchSettings::ToneMapping::Reinhard) {
+  if (opt.linear) {
+    // EmitOptions::linear: the colour leaves before the tone curve and gamma
+  } else if (s.tone_mapping == ir::MarchSettings::ToneMapping::Reinhard) {
     used.insert("tonemap_reinhard");
     post += "c = tonemap_reinhard(c);\n";
   } else if (s.tone_mapping == ir::MarchSettings::ToneMapping::Aces) {
     used.insert("tonemap_aces");
     post += "c = tonemap_aces(c);\n";
   }
-  if (sampled && s.tone_mapping == ir::MarchSettings::ToneMapping::Clamp) {
+  if (sampled && !opt.linear && s.tone_mapping == ir::MarchSettings::ToneMapping::Clamp) {
     // Clamping is the tone curve: per sample, so the mean of any subset of
     // samples (a progressive pass) averages like the mean of all of them.
     post += "c = v3(clamp(c.x, K(0.0f), K(1.0f)), clamp(c.y, K(0.0f), K(1.0f)), clamp(c.z, K(0.0f), K(1.0f)));\n";
@@ -278,6 +281,8 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
       w.line(post.substr(at, nl - at));
       at = nl + 1;
     }
+    // EmitOptions::alpha: a camera ray that misses adds no colour (premultiplied by coverage)
+    if (opt.alpha) w.line(fmt::format("c = v3_select(v3_splat(0.0f), c, {} >= 0.0f);", sampled ? "d_s" : "depth"));
   };
   if (!sampled) {
     w.line("real px = px0 + 0.5f, py = py0 + 0.5f;  // pixel centres");
@@ -379,8 +384,10 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
     }
     w.line("color = v3_scale(color, 1.0f / (scalar)s_count);");
   }
-  used.insert("shade_encode");
-  w.line(fmt::format("color = shade_encode(color, {});", lit.real(1.0 / s.gamma)));
+  if (!opt.linear) {
+    used.insert("shade_encode");
+    w.line(fmt::format("color = shade_encode(color, {});", lit.real(1.0 / s.gamma)));
+  }
   w.blank();
   w.line("__global float* o = out + y0 * out_stride + x0;");
   w.line("const int plane = out_stride * tile_h;");
@@ -469,7 +476,7 @@ EmittedKernel emit_opencl(const ir::Module& m, const EmitOptions& opt) {
   std::string shading = detail::emit_shading(m.plan, facts, lit, used);
   if (facts.material_blend) shading += "\n" + detail::emit_scene_material(m, lit, used);
   std::string kernel = segment_function(m, lit, used) + "\n" + radiance_function(m, used) + "\n" +
-                       render_kernel(m, lit, used, opt.aovs);
+                       render_kernel(m, lit, used, opt);
   if (opt.probe_kernel) kernel += "\n" + probe_kernel(facts.uses_time);
   if (opt.probe_kernel && facts.material_blend) kernel += "\n" + probe_material_kernel(facts.uses_time);
 

@@ -85,7 +85,7 @@ EmittedKernel emit_mesh_kernels(const ir::Module& m, int simd_width) {
   opt.simd_width = simd_width;
   EmittedKernel k = emit_opencl(m, opt);
   std::string albedo;
-  if (detail::needs_material_blend(m)) {
+  if (m.analyses.material_blend) {
     albedo = "    mat_record r;\n    (void)scene_material(TIME_ARG p, &r);\n    albedo = r.albedo;\n";
   } else {
     // the same material_of call shade_surface makes, with the orbit trap when the scene has one
@@ -96,7 +96,7 @@ EmittedKernel emit_mesh_kernels(const ir::Module& m, int simd_width) {
   }
   std::string entries = std::string(kClippedDistance) + colour_kernel(albedo);
   replace_all(entries, "TIME_FROM_GRID",
-              detail::uses_time(m) ? "const scalar time = (scalar)g[10];" : "(void)g[10];");
+              m.analyses.uses_time ? "const scalar time = (scalar)g[10];" : "(void)g[10];");
   k.source += entries;
   k.entry = "sdfc_mesh_blocks";
   return k;

@@ -88,7 +88,7 @@ void read_camera(ValueReader& r, const SourceValue& v, ir::Camera& cam) {
 void read_render(ValueReader& r, const SourceValue& v, ir::MarchSettings& s) {
   MapReader m(r, v, "render", {"width", "height", "precision", "max_steps", "hit_epsilon", "max_distance",
                                "step_factor", "gamma", "normals", "lipschitz_correction", "samples", "filter",
-                               "sampling", "dither", "exposure", "tone_mapping", "normal_step", "refine"});
+                               "sampling", "dither", "exposure", "tone_mapping", "normal_step", "refine", "alpha"});
   s.width = m.integer("width", s.width, 1, 16384);
   s.height = m.integer("height", s.height, 1, 16384);
   s.precision = m.word("precision", "float", {"float", "double"}) == "double" ? ir::Precision::Double : ir::Precision::Float;
@@ -120,6 +120,7 @@ void read_render(ValueReader& r, const SourceValue& v, ir::MarchSettings& s) {
     }
   }
   s.dither = m.word("dither", "false", {"false", "true"}) == "true";
+  s.alpha = m.word("alpha", "false", {"false", "true"}) == "true";
   s.exposure = m.number("exposure", s.exposure, Range::closed(-20, 20));
   std::string tm = m.word("tone_mapping", "clamp", {"clamp", "reinhard", "aces"});
   s.tone_mapping = tm == "aces"       ? ir::MarchSettings::ToneMapping::Aces

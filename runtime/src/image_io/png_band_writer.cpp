@@ -21,32 +21,35 @@ class PngBandWriter final : public BandWriter {
       : file_(path), path_(path), width_(width), height_(height), planes_(std::move(planes)), depth_(bit_depth) {
     if (bit_depth != 8 && bit_depth != 16)
       throw std::invalid_argument(fmt::format("PNG bit depth must be 8 or 16, not {}", bit_depth));
-    if (planes_.size() != 3) throw std::invalid_argument("a PNG takes three planes (r, g, b)");
+    if (planes_.size() != 3 && planes_.size() != 4)
+      throw std::invalid_argument("a PNG takes three planes (r, g, b) or four (r, g, b, a)");
+    const int channels = static_cast<int>(planes_.size());
     png_ = png_create_write_struct(PNG_LIBPNG_VER_STRING, this, on_error, on_warning);
     info_ = png_ ? png_create_info_struct(png_) : nullptr;
     if (!png_ || !info_) throw IoError(fmt::format("cannot write '{}': libpng could not start", path_), path_, 0);
     png_set_write_fn(png_, this, on_write, nullptr);
     guarded([&] {
       png_set_IHDR(png_, info_, static_cast<png_uint_32>(width_), static_cast<png_uint_32>(height_), depth_,
-                   PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+                   channels == 4 ? PNG_COLOR_TYPE_RGB_ALPHA : PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
       // Large images favour speed over the last few percent of size.
       png_set_compression_level(png_, 3);
       png_write_info(png_, info_);
     });
-    row_.resize(static_cast<std::size_t>(width_) * 3 * (depth_ / 8));
+    row_.resize(static_cast<std::size_t>(width_) * planes_.size() * (depth_ / 8));
   }
   ~PngBandWriter() override { png_destroy_write_struct(&png_, &info_); }
 
   void write_band(const FloatImage& band) override {
     if (band.width != width_ || rows_ + band.height > height_)
       throw std::invalid_argument("PNG band does not fit the image");
+    const int channels = static_cast<int>(planes_.size());
     for (int y = 0; y < band.height; ++y) {
-      for (int c = 0; c < 3; ++c) {
+      for (int c = 0; c < channels; ++c) {
         auto plane = band.plane(planes_[static_cast<std::size_t>(c)]);
         for (int x = 0; x < width_; ++x) {
           float v = finite_or_zero(plane[static_cast<std::size_t>(y) * width_ + x], report_.nonfinite_samples);
           v = v < 0.0f ? 0.0f : (v > 1.0f ? 1.0f : v);
-          std::size_t i = static_cast<std::size_t>(x) * 3 + c;
+          std::size_t i = static_cast<std::size_t>(x) * channels + c;
           if (depth_ == 8) {
             row_[i] = static_cast<png_byte>(v * 255.0f + 0.5f);
           } else {

@@ -21,6 +21,8 @@ struct EmitOptions {
   // Pixel rows per packet, a power of two dividing simd_width; 0 picks the
   // default: 4 at width 16 (4x4 tiles, which keep a packet's rays coherent), else 1.
   int packet_rows = 0;
+  bool alpha = false;   // a camera ray that misses adds no colour: the colour is premultiplied by the hit plane
+  bool linear = false;  // store the linear colour (after exposure, before the tone curve and gamma), for EXR
 };
 
 struct EmittedKernel {

@@ -65,6 +65,7 @@ struct MarchSettings {
   // stratified grid of cell centres (samples must then be a square, N x N).
   enum class Sampling { R2, Grid } sampling = Sampling::R2;
   bool dither = false;  // jitter the first march step against banding
+  bool alpha = false;   // images carry coverage as alpha and leave the background out
   // Exposure in stops, then the tone curve, then gamma.
   double exposure = 0;
   enum class ToneMapping { Clamp, Reinhard, Aces } tone_mapping = ToneMapping::Clamp;
