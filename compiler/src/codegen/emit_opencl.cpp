@@ -19,6 +19,7 @@
 #include "sdfc/ir/fractal_math.hpp"
 #include "sdfc/ir/printer.hpp"
 #include "shading_emitter.hpp"
+#include "trap_range.hpp"
 
 namespace sdfc::codegen {
 
@@ -497,7 +498,8 @@ EmittedKernel emit_opencl(const ir::Module& m, const EmitOptions& opt) {
   if (m.plan.march.normals == ir::NormalMethod::Dual) scene += "\n" + detail::emit_scene_gradient(m, lit, used);
   std::optional<detail::RayBounds> bounds = march_bounds(m);
   const bool blended = detail::needs_material_blend(m);
-  std::string shading = detail::emit_shading(m.plan, lit, bounds ? &*bounds : nullptr, used, blended);
+  // orbit_trap.range: auto is measured here, on the fractals' surfaces (trap_range.cpp)
+  std::string shading = detail::emit_shading(detail::with_trap_ranges(m), lit, bounds ? &*bounds : nullptr, used, blended);
   if (blended) shading += "\n" + detail::emit_scene_material(m, lit, used);
   std::string kernel = segment_function(m, lit, used, blended) + "\n" + radiance_function(m, used, blended) + "\n" +
                        render_kernel(m, lit, used, opt.aovs);
