@@ -526,10 +526,11 @@ void material_of(real id, vec3* albedo, real* specular, real* shininess, real tr
     *specular = SEL(*specular, (real)(0.35f), is1);
     *shininess = SEL(*shininess, (real)(32.0f), is1);
     {
-        real x = clamp(trap, K(0.0f), K(1.0f)) * 2.0f;  // orbit trap -> palette position
+        real x = (trap - 0.0012633363f) * 2.3456004f + 0.0f;  // value -> palette position (range [0.001263, 0.4276], measured on the surface)
+        x = clamp(x, K(0.0f), K(1.0f));
         vec3 pal = v3(0.75f, 0.32f, 0.15f);
-        pal = v3_select(pal, v3_mix(v3(0.75f, 0.32f, 0.15f), v3(0.95f, 0.78f, 0.5f), x - 0.0f), x >= 0.0f);
-        pal = v3_select(pal, v3_mix(v3(0.95f, 0.78f, 0.5f), v3(0.98f, 0.95f, 0.88f), x - 1.0f), x >= 1.0f);
+        pal = v3_select(pal, v3_mix(v3(0.75f, 0.32f, 0.15f), v3(0.95f, 0.78f, 0.5f), fmin((x - 0.0f) * 2.0f, K(1.0f))), x >= 0.0f);
+        pal = v3_select(pal, v3_mix(v3(0.95f, 0.78f, 0.5f), v3(0.98f, 0.95f, 0.88f), fmin((x - 0.5f) * 2.0f, K(1.0f))), x >= 0.5f);
         *albedo = v3_select(*albedo, v3_mix(*albedo, pal, (real)(0.7f)), is1);
     }
     // material 2 'floor' (mandelbulb.yaml:20)
