@@ -88,8 +88,9 @@ inline real shadow_hard(TIME_PARAM vec3 p, vec3 l, real tmin, real tmax, real ep
 //! class: estimate
 // Quilez's penumbra estimate: the smallest k * d / t along the shadow ray,
 // clamped to [0, 1]; larger k gives sharper shadows. Steps are capped at a
-// tenth of t (and at least min_step), so the closest approach is sampled
-// within about 10 % wherever it falls. Uncapped steps (or Quilez's
+// quarter of t (and at least min_step), so the closest approach is sampled
+// closely wherever it falls (a tighter cap needs more steps than the default
+// budget of 64 and lets light leak through crevices). Uncapped steps (or Quilez's
 // triangulation between two steps, which assumes an exact distance) sample
 // it at positions that jump from pixel to pixel when the distance is a
 // fractal's estimate: concentric rings in the penumbra that no step budget
@@ -104,7 +105,7 @@ inline real shadow_soft(TIME_PARAM vec3 p, vec3 l, real tmin, real tmax, real k,
         res = SEL(res, fmin(res, k * d / t), active);
         res = SEL(res, (real)(0.0f), active & (d < eps));
         active = active & (d >= eps) & (res > 0.002f);
-        real cap = fmax(0.1f * t, 4.0f * min_step);
+        real cap = fmax(0.25f * t, 4.0f * min_step);
         t = SEL(t, t + clamp(d, min_step, cap), active);
         active = active & (t < tmax);
     }

@@ -335,20 +335,20 @@ inline __attribute__((always_inline)) real trap_mandelbulb_int(vec3 p, int power
 // ---- scene distance: the march evaluates this at every step ----
 real scene_dist(TIME_PARAM vec3 p)
 {
-    real b0 = sd_box(v3_sub(p, v3(0.0f, 0.0f, -0.09795524f)), v3(3.0f, 3.0f, 1.2020447f), 0.0f);  // bounding box  (mandelbulb.yaml:22)
+    real b0 = sd_box(v3_sub(p, v3(0.0f, 0.0f, -0.09795524f)), v3(3.0f, 3.0f, 1.2020447f), 0.0f);  // bounding box  (mandelbulb.yaml:12)
     real d1 = b0;
     if (M_ANY(b0 <= 0.75f))
     {
-        vec3 p2 = v3_sub(p, v3(0.0f, 0.0f, -1.25f));  // translate x=0 y=0 z=-1.25  (mandelbulb.yaml:26)
-        real d3 = sd_box(p2, v3(3.0f, 3.0f, 0.05f), 0.0f);  // box hx=3 hy=3 hz=0.05 radius=0  (mandelbulb.yaml:25)
-        real b4 = sd_box(v3_sub(p, v3(0.0f, 0.0f, 0.0f)), v3(1.1040895f, 1.1040895f, 1.1040895f), 0.0f);  // bounding box  (mandelbulb.yaml:24)
+        vec3 p2 = v3_sub(p, v3(0.0f, 0.0f, -1.25f));  // translate x=0 y=0 z=-1.25  (mandelbulb.yaml:16)
+        real d3 = sd_box(p2, v3(3.0f, 3.0f, 0.05f), 0.0f);  // box hx=3 hy=3 hz=0.05 radius=0  (mandelbulb.yaml:15)
+        real b4 = sd_box(v3_sub(p, v3(0.0f, 0.0f, 0.0f)), v3(1.1040895f, 1.1040895f, 1.1040895f), 0.0f);  // bounding box  (mandelbulb.yaml:14)
         real d5 = b4;
         if (M_ANY(b4 <= 0.27602237f))
         {
-            real d6 = de_mandelbulb_int(p, 8, 10, 2.0f, 1.1040895f, 0, v3_splat(0.0f));  // mandelbulb power=8 iterations=10 bailout=2 method=0  (mandelbulb.yaml:23)
+            real d6 = de_mandelbulb_int(p, 8, 10, 2.0f, 1.1040895f, 0, v3_splat(0.0f));  // mandelbulb power=8 iterations=10 bailout=2 method=0  (mandelbulb.yaml:13)
             d5 = SEL(d6, b4, b4 > 0.27602237f);
         }
-        real d7 = d3;  // union  (mandelbulb.yaml:22)
+        real d7 = d3;  // union  (mandelbulb.yaml:12)
         d7 = fmin(d7, d5);
         d1 = SEL(d7, b0, b0 > 0.75f);
     }
@@ -358,23 +358,23 @@ real scene_dist(TIME_PARAM vec3 p)
 // ---- scene distance with material: evaluated once per hit ----
 real scene_dist_mat(TIME_PARAM vec3 p, real* mat)
 {
-    real b0 = sd_box(v3_sub(p, v3(0.0f, 0.0f, -0.09795524f)), v3(3.0f, 3.0f, 1.2020447f), 0.0f);  // bounding box  (mandelbulb.yaml:22)
+    real b0 = sd_box(v3_sub(p, v3(0.0f, 0.0f, -0.09795524f)), v3(3.0f, 3.0f, 1.2020447f), 0.0f);  // bounding box  (mandelbulb.yaml:12)
     real d1 = b0;
     real m2 = (real)(0.0f);
     if (M_ANY(b0 <= 0.75f))
     {
-        vec3 p3 = v3_sub(p, v3(0.0f, 0.0f, -1.25f));  // translate x=0 y=0 z=-1.25  (mandelbulb.yaml:26)
-        real d4 = sd_box(p3, v3(3.0f, 3.0f, 0.05f), 0.0f);  // box hx=3 hy=3 hz=0.05 radius=0  (mandelbulb.yaml:25)
-        real b5 = sd_box(v3_sub(p, v3(0.0f, 0.0f, 0.0f)), v3(1.1040895f, 1.1040895f, 1.1040895f), 0.0f);  // bounding box  (mandelbulb.yaml:24)
+        vec3 p3 = v3_sub(p, v3(0.0f, 0.0f, -1.25f));  // translate x=0 y=0 z=-1.25  (mandelbulb.yaml:16)
+        real d4 = sd_box(p3, v3(3.0f, 3.0f, 0.05f), 0.0f);  // box hx=3 hy=3 hz=0.05 radius=0  (mandelbulb.yaml:15)
+        real b5 = sd_box(v3_sub(p, v3(0.0f, 0.0f, 0.0f)), v3(1.1040895f, 1.1040895f, 1.1040895f), 0.0f);  // bounding box  (mandelbulb.yaml:14)
         real d6 = b5;
         real m7 = (real)(0.0f);
         if (M_ANY(b5 <= 0.27602237f))
         {
-            real d8 = de_mandelbulb_int(p, 8, 10, 2.0f, 1.1040895f, 0, v3_splat(0.0f));  // mandelbulb power=8 iterations=10 bailout=2 method=0  (mandelbulb.yaml:23)
+            real d8 = de_mandelbulb_int(p, 8, 10, 2.0f, 1.1040895f, 0, v3_splat(0.0f));  // mandelbulb power=8 iterations=10 bailout=2 method=0  (mandelbulb.yaml:13)
             d6 = SEL(d8, b5, b5 > 0.27602237f);
             m7 = SEL((real)(1.0f), (real)(0.0f), b5 > 0.27602237f);
         }
-        real d9 = d4;  // union  (mandelbulb.yaml:22)
+        real d9 = d4;  // union  (mandelbulb.yaml:12)
         real m10 = (real)(2.0f);
         m10 = SEL(m10, m7, d6 < d9);
         d9 = fmin(d9, d6);
@@ -388,19 +388,19 @@ real scene_dist_mat(TIME_PARAM vec3 p, real* mat)
 // ---- orbit trap of the nearest fractal: evaluated once per hit, for orbit-trap materials ----
 real scene_trap(TIME_PARAM vec3 p)
 {
-    real b0 = sd_box(v3_sub(p, v3(0.0f, 0.0f, -0.09795524f)), v3(3.0f, 3.0f, 1.2020447f), 0.0f);  // bounding box  (mandelbulb.yaml:22)
+    real b0 = sd_box(v3_sub(p, v3(0.0f, 0.0f, -0.09795524f)), v3(3.0f, 3.0f, 1.2020447f), 0.0f);  // bounding box  (mandelbulb.yaml:12)
     real d1 = b0;
     real m2 = (real)(0.0f);
     if (M_ANY(b0 <= 0.75f))
     {
-        vec3 p3 = v3_sub(p, v3(0.0f, 0.0f, -1.25f));  // translate x=0 y=0 z=-1.25  (mandelbulb.yaml:26)
-        real d4 = sd_box(p3, v3(3.0f, 3.0f, 0.05f), 0.0f);  // box hx=3 hy=3 hz=0.05 radius=0  (mandelbulb.yaml:25)
-        real b5 = sd_box(v3_sub(p, v3(0.0f, 0.0f, 0.0f)), v3(1.1040895f, 1.1040895f, 1.1040895f), 0.0f);  // bounding box  (mandelbulb.yaml:24)
+        vec3 p3 = v3_sub(p, v3(0.0f, 0.0f, -1.25f));  // translate x=0 y=0 z=-1.25  (mandelbulb.yaml:16)
+        real d4 = sd_box(p3, v3(3.0f, 3.0f, 0.05f), 0.0f);  // box hx=3 hy=3 hz=0.05 radius=0  (mandelbulb.yaml:15)
+        real b5 = sd_box(v3_sub(p, v3(0.0f, 0.0f, 0.0f)), v3(1.1040895f, 1.1040895f, 1.1040895f), 0.0f);  // bounding box  (mandelbulb.yaml:14)
         real d6 = b5;
         real m7 = (real)(0.0f);
         if (M_ANY(b5 <= 0.27602237f))
         {
-            real d8 = de_mandelbulb_int(p, 8, 10, 2.0f, 1.1040895f, 0, v3_splat(0.0f));  // mandelbulb power=8 iterations=10 bailout=2 method=0  (mandelbulb.yaml:23)
+            real d8 = de_mandelbulb_int(p, 8, 10, 2.0f, 1.1040895f, 0, v3_splat(0.0f));  // mandelbulb power=8 iterations=10 bailout=2 method=0  (mandelbulb.yaml:13)
             real oiter10;
             real ocount11;
             real otrap9 = trap_mandelbulb_int(p, 8, 10, 2.0f, 0, v3_splat(0.0f), &oiter10, &ocount11);
@@ -408,7 +408,7 @@ real scene_trap(TIME_PARAM vec3 p)
             d6 = SEL(d8, b5, b5 > 0.27602237f);
             m7 = SEL(trap12, (real)(0.0f), b5 > 0.27602237f);
         }
-        real d13 = d4;  // union  (mandelbulb.yaml:22)
+        real d13 = d4;  // union  (mandelbulb.yaml:12)
         real m14 = (real)(0.0f);
         m14 = SEL(m14, m7, d6 < d13);
         d13 = fmin(d13, d6);
@@ -491,8 +491,9 @@ inline vec3 normal_tetrahedral(TIME_PARAM vec3 p, real h)
 //! class: estimate
 // Quilez's penumbra estimate: the smallest k * d / t along the shadow ray,
 // clamped to [0, 1]; larger k gives sharper shadows. Steps are capped at a
-// tenth of t (and at least min_step), so the closest approach is sampled
-// within about 10 % wherever it falls. Uncapped steps (or Quilez's
+// quarter of t (and at least min_step), so the closest approach is sampled
+// closely wherever it falls (a tighter cap needs more steps than the default
+// budget of 64 and lets light leak through crevices). Uncapped steps (or Quilez's
 // triangulation between two steps, which assumes an exact distance) sample
 // it at positions that jump from pixel to pixel when the distance is a
 // fractal's estimate: concentric rings in the penumbra that no step budget
@@ -507,7 +508,7 @@ inline real shadow_soft(TIME_PARAM vec3 p, vec3 l, real tmin, real tmax, real k,
         res = SEL(res, fmin(res, k * d / t), active);
         res = SEL(res, (real)(0.0f), active & (d < eps));
         active = active & (d >= eps) & (res > 0.002f);
-        real cap = fmax(0.1f * t, 4.0f * min_step);
+        real cap = fmax(0.25f * t, 4.0f * min_step);
         t = SEL(t, t + clamp(d, min_step, cap), active);
         active = active & (t < tmax);
     }
@@ -520,7 +521,7 @@ void material_of(real id, vec3* albedo, real* specular, real* shininess, real tr
     *albedo = v3(0.8f, 0.8f, 0.8f);  // material 0 'default'
     *specular = (real)(0.2f);
     *shininess = (real)(32.0f);
-    // material 1 'bone' (mandelbulb.yaml:15)
+    // material 1 'bone' (mandelbulb.yaml:21)
     mask is1 = id == 1.0f;
     *albedo = v3_select(*albedo, v3(0.92f, 0.84f, 0.7f), is1);
     *specular = SEL(*specular, (real)(0.35f), is1);
@@ -533,7 +534,7 @@ void material_of(real id, vec3* albedo, real* specular, real* shininess, real tr
         pal = v3_select(pal, v3_mix(v3(0.95f, 0.78f, 0.5f), v3(0.98f, 0.95f, 0.88f), fmin((x - 0.5f) * 2.0f, K(1.0f))), x >= 0.5f);
         *albedo = v3_select(*albedo, v3_mix(*albedo, pal, (real)(0.7f)), is1);
     }
-    // material 2 'floor' (mandelbulb.yaml:20)
+    // material 2 'floor' (mandelbulb.yaml:26)
     mask is2 = id == 2.0f;
     *albedo = v3_select(*albedo, v3(0.3f, 0.31f, 0.34f), is2);
     *specular = SEL(*specular, (real)(0.1f), is2);
@@ -549,9 +550,9 @@ vec3 shade_surface(TIME_PARAM vec3 p, vec3 n, vec3 v, real mat, real trap, real 
     vec3 c = v3_mul(albedo, v3(0.11f, 0.132f, 0.176f));  // ambient, all ambient lights summed
     c = v3_scale(c, occlusion);  // ambient occlusion dims the ambient light only
     const vec3 shadow_origin = v3_mad(p, n, 2.0f * footprint);
-    // light 0: directional (mandelbulb.yaml:9)
+    // light 0: directional (mandelbulb.yaml:8)
     c = v3_add(c, v3_scale(shade_blinn_phong(n, v3(0.55138016f, -0.45112923f, 0.7017566f), v, albedo, specular, shininess, v3(1.25f, 1.15f, 1.0f)), shadow_soft(TIME_ARG shadow_origin, v3(0.55138016f, -0.45112923f, 0.7017566f), 2.0f * footprint, ray_box_exit(shadow_origin, v3(0.55138016f, -0.45112923f, 0.7017566f), v3(-3.061f, -3.061f, -1.361f), v3(3.061f, 3.061f, 1.1650895f), 50.0f), 10.0f, footprint, 0.5f * footprint, 64, hit & (v3_dot(n, v3(0.55138016f, -0.45112923f, 0.7017566f)) > 0.0f))));
-    // light 1: point, falls off with the squared distance (mandelbulb.yaml:10)
+    // light 1: point, falls off with the squared distance (mandelbulb.yaml:9)
     {
         vec3 l = v3_sub(v3(-2.5f, -2.0f, 2.5f), p);
         real dist2 = fmax(v3_dot(l, l), K(1e-8f));
