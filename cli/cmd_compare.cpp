@@ -10,7 +10,7 @@ namespace sdfc::cli {
 Action add_compare(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "compare", "Compare a render with a reference render of the same view: hit-mask disagreement, depth and "
-                 "normal error (from <stem>.depth.pfm and <stem>.normal.pfm beside each PNG), differing pixels, PSNR and SSIM");
+                 "normal error (from <stem>.depth.pfm, <stem>.normal.pfm and <stem>.hit.pfm beside each PNG), differing pixels, PSNR and SSIM");
   auto ref = std::make_shared<std::string>(), test = std::make_shared<std::string>();
   auto json = std::make_shared<bool>(false);
   cmd->add_option("reference", *ref, "The reference render (PNG)")->required();

@@ -51,6 +51,8 @@ struct RenderArgs {
   SceneArgs scene;
   std::string output;
   int width = 0, height = 0;
+  int samples = 0;  // --samples: overrides render.samples
+  bool verbose = false;
   std::string device;
   int simd_width = 0;
   int packet_rows = 0;
@@ -106,6 +108,7 @@ int run_render(RenderArgs a) {
   // --width/--height are overrides like any other, so they are validated alike.
   if (a.width > 0) a.scene.sets.push_back(fmt::format("render.width={}", a.width));
   if (a.height > 0) a.scene.sets.push_back(fmt::format("render.height={}", a.height));
+  if (a.samples > 0) a.scene.sets.push_back(fmt::format("render.samples={}", a.samples));
   SourceValue doc = load_scene_source(a.scene.path, a.scene.sets);
   ir::Module m = build_module(doc, a.scene.path);
   if (a.reference) make_reference(m.plan.march, a.reference_epsilon, a.reference_samples, a.aovs);
@@ -142,10 +145,13 @@ int run_render(RenderArgs a) {
   // One build serves every frame: time and the camera are frame parameters.
   sdfrt::Renderer renderer(device, spec);
   const auto& bs = renderer.build_stats();
-  if (!a.quiet)
+  if (a.verbose)
     std::cerr << fmt::format("device: {}; kernel built in {:.0f} ms{}; {} pixel(s) per work-item ({}x{})\n",
                              device.info().device_name, bs.build_ms, bs.cache_hit ? " (cached)" : "", k.simd_width,
                              k.simd_width / k.packet_rows, k.packet_rows);
+  else if (!a.quiet)
+    std::cerr << fmt::format("rendering on {} (kernel {})\n", device.info().device_name,
+                             bs.cache_hit ? "built earlier, from the cache" : fmt::format("built in {:.1f} s", bs.build_ms / 1000));
 
   const int w = m.plan.march.width, h = m.plan.march.height;
   std::signal(SIGINT, on_sigint);
@@ -263,6 +269,8 @@ Action add_render(CLI::App& app) {
       ->check(CLI::IsMember({"0", "first"}));
   cmd->add_option("--width", a->width, "Image width (overrides render.width)")->check(CLI::Range(1, 16384));
   cmd->add_option("--height", a->height, "Image height (overrides render.height)")->check(CLI::Range(1, 16384));
+  cmd->add_option("--samples", a->samples, "Samples per pixel (overrides render.samples)")->check(CLI::Range(1, 1024));
+  cmd->add_flag("--verbose", a->verbose, "Also print the kernel's build time and its packet shape (pixels per work-item)");
   cmd->add_option("--device", a->device, "Device id from 'sdfc devices' (P:D, an index or part of the name); "
                                          "default: $SDFC_DEVICE, else the first CPU device");
   cmd->add_option("--simd-width", a->simd_width, "Pixels per work-item: 1 or 2/4/8/16 (default: 16 on CPUs, 1 on GPUs)")

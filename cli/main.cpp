@@ -8,6 +8,7 @@
 #include <sdfrt/errors.hpp>
 
 #include "commands.hpp"
+#include "suggest.hpp"
 #include "sdfc/support/diagnostics.hpp"
 
 int main(int argc, char** argv) {
@@ -22,6 +23,7 @@ int main(int argc, char** argv) {
       "130 stopped by Ctrl-C.\n"
       "Environment: SDFC_DEVICE picks the device (see 'sdfc devices'); SDFC_CACHE_DIR and\n"
       "SDFC_KERNEL_CACHE=0 control the kernel binary cache.");
+  app.set_version_flag("--version", std::string("sdfc ") + SDFC_VERSION);
   app.require_subcommand(1);
   std::vector<std::pair<CLI::App*, Action>> commands;
   auto reg = [&](Action (*add)(CLI::App&)) {
@@ -47,7 +49,9 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);  // --version
     app.exit(e);
+    if (std::string hint = suggest_for_arguments(app, argc, argv); !hint.empty()) std::cerr << "sdfc: " << hint << "\n";
     return kUsageError;
   }
   try {

@@ -87,29 +87,26 @@ inline real shadow_hard(TIME_PARAM vec3 p, vec3 l, real tmin, real tmax, real ep
 //! after-scene
 //! class: estimate
 // Quilez's penumbra estimate: the smallest k * d / t along the shadow ray,
-// clamped to [0, 1]; larger k gives sharper shadows. The improved form
-// places the closest approach between two steps (from the last two
-// distances), which removes the rings plain sampling leaves. t starts at
-// tmin > 0 and the divisor is kept at least tmin, so it never divides by 0.
+// clamped to [0, 1]; larger k gives sharper shadows. Steps are capped at a
+// quarter of t (and at least min_step), so the closest approach is sampled
+// closely wherever it falls (a tighter cap needs more steps than the default
+// budget of 64 and lets light leak through crevices). Uncapped steps (or Quilez's
+// triangulation between two steps, which assumes an exact distance) sample
+// it at positions that jump from pixel to pixel when the distance is a
+// fractal's estimate: concentric rings in the penumbra that no step budget
+// removes. t starts at tmin > 0, so it never divides by 0.
 inline real shadow_soft(TIME_PARAM vec3 p, vec3 l, real tmin, real tmax, real k, real eps, real min_step,
                         int max_steps, mask active)
 {
     real res = 1.0f;
     real t = tmin;
-    real prev = (real)(1e20f);
     for (int i = 0; i < max_steps && M_ANY(active); ++i) {
         real d = scene_dist(TIME_ARG v3_mad(p, l, t));
-        // The triangulation needs the two distance spheres to overlap
-        // (d < 2 prev); a longer minimum step or an estimated distance can
-        // break that, and then the plain d is used.
-        real y = d * d / (2.0f * prev);  // ~0 at the first step, where prev is huge
-        y = SEL(y, (real)(0.0f), y >= d);
-        real side = sqrt(fmax(d * d - y * y, K(0.0f)));
-        res = SEL(res, fmin(res, k * side / fmax(t - y, tmin)), active);
+        res = SEL(res, fmin(res, k * d / t), active);
         res = SEL(res, (real)(0.0f), active & (d < eps));
         active = active & (d >= eps) & (res > 0.002f);
-        prev = SEL(prev, fmax(d, eps), active);
-        t = SEL(t, t + fmax(d, min_step), active);
+        real cap = fmax(0.25f * t, 4.0f * min_step);
+        t = SEL(t, t + clamp(d, min_step, cap), active);
         active = active & (t < tmax);
     }
     return clamp(res, K(0.0f), K(1.0f));

@@ -17,7 +17,11 @@ sdfrt::Device& device() {
 ir::Module compile_text(const std::string& scene) { return passes::run_pipeline(lower_text(scene)); }
 
 Rendered render_text(const std::string& scene, int simd_width, int tile, int packet_rows) {
-  Rendered r{compile_text(scene), {}};
+  return render_module(compile_text(scene), simd_width, tile, packet_rows);
+}
+
+Rendered render_module(ir::Module module, int simd_width, int tile, int packet_rows) {
+  Rendered r{std::move(module), {}};
   codegen::EmitOptions opt;
   opt.simd_width = simd_width;
   opt.packet_rows = packet_rows;

@@ -22,6 +22,8 @@ struct Rendered {
 // Renders with 16-lane packets (the CPU default), AOV planes included.
 // packet_rows 0: the emitter's default shape (4x4 at width 16).
 Rendered render_text(const std::string& scene, int simd_width = 16, int tile = 256, int packet_rows = 0);
+// The same for a compiled module (a test may change its plan first).
+Rendered render_module(ir::Module module, int simd_width = 16, int tile = 256, int packet_rows = 0);
 
 // The pixel (column, row) the camera of `plan` sees world point p in.
 struct Pixel {

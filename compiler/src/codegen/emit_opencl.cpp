@@ -19,6 +19,7 @@
 #include "sdfc/codegen/stdlib_manifest.hpp"
 #include "sdfc/ir/printer.hpp"
 #include "shading_emitter.hpp"
+#include "trap_range.hpp"
 
 namespace sdfc::codegen {
 
@@ -473,7 +474,8 @@ EmittedKernel emit_opencl(const ir::Module& m, const EmitOptions& opt) {
   std::string scene = detail::emit_scene_functions(m, lit, used);
   if (opt.aovs) scene += "\n" + detail::emit_scene_iterations(m, lit, used);
   if (m.plan.march.normals == ir::NormalMethod::Dual) scene += "\n" + detail::emit_scene_gradient(m, lit, used);
-  std::string shading = detail::emit_shading(m.plan, facts, lit, used);
+  // orbit_trap.range: auto is measured here, on the fractals' surfaces (trap_range.cpp)
+  std::string shading = detail::emit_shading(detail::with_trap_ranges(m), facts, lit, used);
   if (facts.material_blend) shading += "\n" + detail::emit_scene_material(m, lit, used);
   std::string kernel = segment_function(m, lit, used) + "\n" + radiance_function(m, used) + "\n" +
                        render_kernel(m, lit, used, opt);

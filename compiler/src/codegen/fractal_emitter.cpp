@@ -108,6 +108,12 @@ std::string orbit_args(const ir::Node& n, const Literals& lit) {
 
 }  // namespace
 
+std::string bulb_estimator_radius(const ir::Node& n, const Literals& lit) {
+  if (!n.animation(0) && !n.animation(2)) return lit.real(ir::bulb_estimator_radius(n.params[0], n.params[2]));
+  return fmt::format("fmax({}, fmin({}, pow({}, {} / fmax({}, {}))))", param(n, 2, lit), lit.real(64.0), lit.real(2.0),
+                     lit.real(8.0), param(n, 0, lit), lit.real(1.0));
+}
+
 bool is_fractal(const ir::Node& n) { return ir::info(n.kind).category == ir::Category::Fractal; }
 
 std::string emit_fractal(const ir::Node& n, const std::string& p, const Literals& lit, CodeWriter& w,
@@ -134,17 +140,19 @@ std::string emit_fractal(const ir::Node& n, const std::string& p, const Literals
                            ipower, int(q[1]), r(2), radius, int(q[3]), ir::de_method_name(method));
       if (ipower)  // trig-free: the angles' multiples come from complex powers
         return fmt::format("{}({}, {}, {}, {}, {}, 0, v3_splat(0.0f))", call("de_mandelbulb_int"), p, ipower,
-                           int(q[1]), r(2), radius);
-      return fmt::format("{}({}, {}, {}, {}, {})", call("de_mandelbulb"), p, r(0), int(q[1]), r(2), radius);
+                           int(q[1]), bulb_estimator_radius(n, lit), radius);
+      return fmt::format("{}({}, {}, {}, {}, {})", call("de_mandelbulb"), p, r(0), int(q[1]), bulb_estimator_radius(n, lit),
+                         radius);
     }
     case Kind::Juliabulb: {
       double cn = std::sqrt(q[3] * q[3] + q[4] * q[4] + q[5] * q[5]);
       std::string radius = lit.real(ir::julia_set_radius(q[0], cn));
       std::string c = lit.vec3({q[3], q[4], q[5]});
       if (integer_power(q[0]))
-        return fmt::format("{}({}, {}, {}, {}, {}, 1, {})", call("de_mandelbulb_int"), p, int(q[0]), int(q[1]), r(2),
-                           radius, c);
-      return fmt::format("{}({}, {}, {}, {}, {}, {})", call("de_juliabulb"), p, r(0), int(q[1]), r(2), radius, c);
+        return fmt::format("{}({}, {}, {}, {}, {}, 1, {})", call("de_mandelbulb_int"), p, int(q[0]), int(q[1]),
+                           bulb_estimator_radius(n, lit), radius, c);
+      return fmt::format("{}({}, {}, {}, {}, {}, {})", call("de_juliabulb"), p, r(0), int(q[1]), bulb_estimator_radius(n, lit),
+                         radius, c);
     }
     case Kind::Mandelbox:
       return fmt::format("{}({}, {})",

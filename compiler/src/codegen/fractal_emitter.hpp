@@ -17,6 +17,11 @@ bool is_fractal(const ir::Node& n);
 std::string emit_fractal(const ir::Node& n, const std::string& p, const Literals& lit, CodeWriter& w,
                          std::set<std::string>& used);
 
+// The escape radius a Mandelbulb's or Juliabulb's estimator iterates to
+// (ir::bulb_estimator_radius), a literal or, for an animated power or
+// bailout, an expression of them.
+std::string bulb_estimator_radius(const ir::Node& n, const Literals& lit);
+
 // The values of the node's orbit from `p` (evaluated once per hit or pixel,
 // never in the march): its orbit trap, its smooth iteration count in [0, 1]
 // (an orbit-trap material's `source: iteration`), or its escape iteration

@@ -167,11 +167,12 @@ class GradientEmitter {
     std::string g;
     switch (n.kind) {
       case Kind::Mandelbulb:
-        g = fmt::format("gn_mandelbulb({}, {}, {}, {}, 0, v3_splat(0.0f))", p, r(0), int(q[1]), r(2));
+        g = fmt::format("gn_mandelbulb({}, {}, {}, {}, 0, v3_splat(0.0f))", p, r(0), int(q[1]), bulb_estimator_radius(n, lit_));
         used_.insert("gn_mandelbulb");
         break;
       case Kind::Juliabulb:
-        g = fmt::format("gn_mandelbulb({}, {}, {}, {}, 1, {})", p, r(0), int(q[1]), r(2), lit_.vec3({q[3], q[4], q[5]}));
+        g = fmt::format("gn_mandelbulb({}, {}, {}, {}, 1, {})", p, r(0), int(q[1]), bulb_estimator_radius(n, lit_),
+                        lit_.vec3({q[3], q[4], q[5]}));
         used_.insert("gn_mandelbulb");
         break;
       case Kind::Mandelbox:

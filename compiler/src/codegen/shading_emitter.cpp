@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "palette_emitter.hpp"
+
 namespace sdfc::codegen::detail {
 
 namespace {
@@ -14,19 +16,6 @@ std::string where(const SourceLoc& loc) {
   return fmt::format("{}:{}", f, loc.line);
 }
 
-// Orbit-trap colour: the trap (smallest |z| of the orbit) clamped to [0, 1]
-// walks the palette piecewise linearly; the result is mixed into the albedo.
-void emit_trap_palette(CodeWriter& w, const Literals& lit, const ir::MaterialDef& md, size_t i) {
-  const auto& pal = md.trap_palette;
-  w.open("{");
-  w.line(fmt::format("real x = clamp(trap, K(0.0f), K(1.0f)) * {};  // orbit trap -> palette position", lit.real(double(pal.size() - 1))));
-  w.line(fmt::format("vec3 pal = {};", lit.vec3(pal[0])));
-  for (size_t k = 0; k + 1 < pal.size(); ++k)
-    w.line(fmt::format("pal = v3_select(pal, v3_mix({}, {}, x - {}), x >= {});", lit.vec3(pal[k]), lit.vec3(pal[k + 1]),
-                       lit.real(double(k)), lit.real(double(k))));
-  w.line(fmt::format("*albedo = v3_select(*albedo, v3_mix(*albedo, pal, {}), is{});", lit.typed(md.trap_mix), i));
-  w.close("}");
-}
 
 // The shadow factor towards a light (empty when the light casts none).
 // With the scene's bounds, the march stops where the shadow ray leaves them:
@@ -79,7 +68,7 @@ std::string emit_shading(const ir::RenderPlan& plan, const ir::Analyses& facts, 
     w.line(fmt::format("*albedo = v3_select(*albedo, {}, is{});", lit.vec3(md.color), i));
     w.line(fmt::format("*specular = SEL(*specular, {}, is{});", lit.typed(md.specular), i));
     w.line(fmt::format("*shininess = SEL(*shininess, {}, is{});", lit.typed(md.shininess), i));
-    if (!md.trap_palette.empty()) emit_trap_palette(w, lit, md, i);
+    if (!md.trap_palette.empty()) emit_trap_palette(w, lit, md, i);  // palette_emitter.cpp
   }
   w.close("}");
   w.blank();

@@ -133,9 +133,19 @@ NodeId GeometryLowering::lower(const SourceValue& v) {
     if (contains(modifiers, k.scalar)) continue;
     if (contains(geometry_kinds(), k.scalar)) {
       if (kind_key) {
+        // A --set that names a kind the node does not have adds it beside the
+        // node's own: say how the path should continue instead.
+        const SourceValue& added = k.loc.file && k.loc.file->rfind("--set", 0) == 0 ? k : *kind_key;
+        const SourceValue& own = &added == &k ? *kind_key : k;
+        bool from_set = added.loc.file && added.loc.file->rfind("--set", 0) == 0;
         r_.sink().error(k.loc, fmt::format("a geometry node has one kind, but this one has '{}' and '{}'",
                                            kind_key->scalar, k.scalar),
-                        "put them in a union: '{union: [...]}'");
+                        from_set ? fmt::format("this node is a '{}' in the scene file: a --set path follows the file's "
+                                               "keys through it{}",
+                                               own.scalar, own.scalar == "union"
+                                                               ? fmt::format(" (its first child: scene.union.0.{}...)", added.scalar)
+                                                               : std::string())
+                                 : std::string("put them in a union: '{union: [...]}'"));
         return ir::kNoNode;
       }
       kind_key = &k;
@@ -268,6 +278,14 @@ NodeId GeometryLowering::apply_modifiers(const SourceValue& node, NodeId n) {
     Param3 deg{0.0, 0.0, 0.0};
     std::array<const SourceValue*, 3> where{rot, rot, rot};
     int count = 3;
+    if (rot->is_scalar()) {  // a bare angle: say both forms, not only "a map"
+      r_.sink().error(rot->loc,
+                      fmt::format("rotate: expected {{axis: [x, y, z], degrees: a}} or a list [rx, ry, rz] of degrees about "
+                                  "X, Y and Z, got '{}'", rot->scalar),
+                      fmt::format("for {} degrees about the z axis: rotate: {{axis: [0, 0, 1], degrees: {}}}", rot->scalar,
+                                  rot->scalar));
+      return n;
+    }
     if (rot->is_seq()) {
       // Degrees about X, then Y, then Z: R = Rz * Ry * Rx.
       axes = {Vec3d{0, 0, 1}, Vec3d{0, 1, 0}, Vec3d{1, 0, 0}};

@@ -11,6 +11,7 @@
 #include "sdfc/ir/dual_normals.hpp"
 #include "sdfc/frontend/value_reader.hpp"
 #include "read_effects.hpp"
+#include "read_orbit_trap.hpp"
 
 namespace sdfc {
 
@@ -195,28 +196,6 @@ void read_lights(ValueReader& r, const SourceValue& v, ir::RenderPlan& plan) {
   }
 }
 
-// orbit_trap: {palette: [[r, g, b], ...], mix: 0.7, source: trap}: 2 to 16
-// colours; source `trap` (the orbit trap) or `iteration` (the smooth
-// iteration count).
-void read_orbit_trap(ValueReader& r, const SourceValue& v, ir::MaterialDef& md) {
-  std::string what = "material '" + md.name + "'.orbit_trap";
-  MapReader m(r, v, what, {"palette", "mix", "source"});
-  md.trap_mix = m.number("mix", 0.7, Range::closed(0, 1));
-  if (const SourceValue* s = m.get("source")) {
-    if (s->is_scalar() && s->scalar == "iteration") md.trap_source = ir::MaterialDef::TrapSource::Iteration;
-    else if (!s->is_scalar() || s->scalar != "trap")
-      r.sink().error(s->loc, what + ".source: expected 'trap' or 'iteration'",
-                     s->is_scalar() ? did_you_mean(s->scalar, {"trap", "iteration"}) : "");
-  }
-  const SourceValue* p = m.require("palette");
-  if (!p) return;
-  if (!p->is_seq() || p->items.size() < 2 || p->items.size() > 16) {
-    r.sink().error(p->loc, what + ".palette: expected a list of 2 to 16 colours [r, g, b]", "");
-    return;
-  }
-  for (const auto& c : p->items) md.trap_palette.push_back(r.vec3(c, what + ".palette", Range::closed(0, 1)));
-}
-
 void read_materials(ValueReader& r, const SourceValue& v, ir::RenderPlan& plan) {
   if (!v.is_map()) {
     r.sink().error(v.loc, "materials: expected a map from names to materials, e.g. 'bone: {color: [0.9, 0.85, 0.75]}'", "");
@@ -235,7 +214,7 @@ void read_materials(ValueReader& r, const SourceValue& v, ir::RenderPlan& plan) 
     md.specular = m.number("specular", md.specular, Range::closed(0, 100));
     md.shininess = m.number("shininess", md.shininess, Range::closed(1, 10000));
     md.reflectivity = m.number("reflectivity", md.reflectivity, Range::closed(0, 1));
-    if (const SourceValue* t = m.get("orbit_trap")) read_orbit_trap(r, *t, md);
+    if (const SourceValue* t = m.get("orbit_trap")) frontend::read_orbit_trap(r, *t, md);
     plan.materials.push_back(md);
   }
 }

@@ -21,6 +21,7 @@ using ir::Kind;
 double len(double x, double y, double z) { return std::sqrt(x * x + y * y + z * z); }
 
 double mandelbulb(const Vec3& p, double power, int iterations, double bailout) {
+  bailout = ir::bulb_estimator_radius(power, bailout);
   double zx = p[0], zy = p[1], zz = p[2];
   double dr = 1.0, r = len(zx, zy, zz);
   for (int i = 0; i < iterations && r < bailout; ++i) {

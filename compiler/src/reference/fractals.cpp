@@ -73,7 +73,7 @@ void sort_descending(Vec3& z) {
 }  // namespace
 
 double juliabulb(const Vec3& p, const std::vector<double>& q) {
-  double power = q[0], bailout = q[2];
+  double power = q[0], bailout = ir::bulb_estimator_radius(q[0], q[2]);
   int iterations = int(q[1]);
   Vec3 c{q[3], q[4], q[5]}, z = p;
   double dr = 1, r = len(z);

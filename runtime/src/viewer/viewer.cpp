@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <iostream>
 #include <sdfrt/image_io.hpp>
+#include <unistd.h>
 
 namespace sdfc::viewer {
 
@@ -246,6 +247,8 @@ FrameStats Viewer::benchmark(double seconds, double orbit_degrees) {
   // Warm-up: the first launch of a shape compiles PoCL's work-group function.
   scene_.render(path ? scene_camera : start, opt_.width, opt_.height, path_t0);
   std::vector<double> frame_ms;
+  const bool to_terminal = isatty(STDERR_FILENO) == 1;
+  double next_line = 1.0;
   auto t0 = std::chrono::steady_clock::now();
   double elapsed = 0;
   while (elapsed < seconds && !quit_) {
@@ -267,11 +270,13 @@ FrameStats Viewer::benchmark(double seconds, double orbit_degrees) {
     auto f1 = std::chrono::steady_clock::now();
     frame_ms.push_back(std::chrono::duration<double, std::milli>(f1 - f0).count());
     elapsed = std::chrono::duration<double>(f1 - t0).count();
-    std::cerr << fmt::format("\rbenchmark: {:.1f}/{:.0f} s, {} frames", std::min(elapsed, seconds), seconds,
-                             frame_ms.size())
-              << std::flush;
+    // On a terminal one line updated in place; in a log, a line every second.
+    std::string status = fmt::format("benchmark: {:.1f}/{:.0f} s, {} frames", std::min(elapsed, seconds), seconds,
+                                     frame_ms.size());
+    if (to_terminal) std::cerr << "\r" << status << std::flush;
+    else if (elapsed >= next_line || elapsed >= seconds) std::cerr << status << "\n", next_line += 1.0;
   }
-  std::cerr << "\n";
+  if (to_terminal) std::cerr << "\n";
   return frame_stats(std::move(frame_ms), elapsed);
 }
 

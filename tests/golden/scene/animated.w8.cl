@@ -7,7 +7,7 @@ real scene_dist(TIME_PARAM vec3 p)
     if (M_ANY(b1 <= 0.49117172f))
     {
         vec3 p3 = v3_mat(p, cos(((25.0f * time) * 0.017453292f)), sin(((25.0f * time) * 0.017453292f)), 0.0f, (-1.0f * sin(((25.0f * time) * 0.017453292f))), cos(((25.0f * time) * 0.017453292f)), 0.0f, 0.0f, 0.0f, (cos(((25.0f * time) * 0.017453292f)) + (1.0f - cos(((25.0f * time) * 0.017453292f)))));  // rotate (animated)  (animated.yaml:21)
-        real d4 = de_mandelbulb(p3, (8.0f + (1.5f * sin((0.8f * time)))), 8, 2.0f, ((8.0f + (1.5f * sin((0.8f * time)))) <= 1.25f ? 4.0f : fmin(4.0f, pow(2.0f, 1.0f / ((8.0f + (1.5f * sin((0.8f * time)))) - 1.0f)))));  // mandelbulb power="(8 + (1.5 * sin((0.8 * time))))" iterations=8 bailout=2 method=0  (animated.yaml:20)
+        real d4 = de_mandelbulb(p3, (8.0f + (1.5f * sin((0.8f * time)))), 8, fmax(2.0f, fmin(64.0f, pow(2.0f, 8.0f / fmax((8.0f + (1.5f * sin((0.8f * time)))), 1.0f)))), ((8.0f + (1.5f * sin((0.8f * time)))) <= 1.25f ? 4.0f : fmin(4.0f, pow(2.0f, 1.0f / ((8.0f + (1.5f * sin((0.8f * time)))) - 1.0f)))));  // mandelbulb power="(8 + (1.5 * sin((0.8 * time))))" iterations=8 bailout=2 method=0  (animated.yaml:20)
         d2 = SEL(d4, b1, b1 > 0.49117172f);
     }
     vec3 p5 = v3_sub(p, v3(1.5f, 0.2f, (-0.35f + (0.3f * sin((2.0f * time))))));  // translate x=1.5 y=0.2 z="(-0.35 + (0.3 * sin((2 * time))))"  (animated.yaml:24)
@@ -34,7 +34,7 @@ real scene_dist_mat(TIME_PARAM vec3 p, real* mat)
     if (M_ANY(b1 <= 0.49117172f))
     {
         vec3 p4 = v3_mat(p, cos(((25.0f * time) * 0.017453292f)), sin(((25.0f * time) * 0.017453292f)), 0.0f, (-1.0f * sin(((25.0f * time) * 0.017453292f))), cos(((25.0f * time) * 0.017453292f)), 0.0f, 0.0f, 0.0f, (cos(((25.0f * time) * 0.017453292f)) + (1.0f - cos(((25.0f * time) * 0.017453292f)))));  // rotate (animated)  (animated.yaml:21)
-        real d5 = de_mandelbulb(p4, (8.0f + (1.5f * sin((0.8f * time)))), 8, 2.0f, ((8.0f + (1.5f * sin((0.8f * time)))) <= 1.25f ? 4.0f : fmin(4.0f, pow(2.0f, 1.0f / ((8.0f + (1.5f * sin((0.8f * time)))) - 1.0f)))));  // mandelbulb power="(8 + (1.5 * sin((0.8 * time))))" iterations=8 bailout=2 method=0  (animated.yaml:20)
+        real d5 = de_mandelbulb(p4, (8.0f + (1.5f * sin((0.8f * time)))), 8, fmax(2.0f, fmin(64.0f, pow(2.0f, 8.0f / fmax((8.0f + (1.5f * sin((0.8f * time)))), 1.0f)))), ((8.0f + (1.5f * sin((0.8f * time)))) <= 1.25f ? 4.0f : fmin(4.0f, pow(2.0f, 1.0f / ((8.0f + (1.5f * sin((0.8f * time)))) - 1.0f)))));  // mandelbulb power="(8 + (1.5 * sin((0.8 * time))))" iterations=8 bailout=2 method=0  (animated.yaml:20)
         d2 = SEL(d5, b1, b1 > 0.49117172f);
         m3 = SEL((real)(1.0f), (real)(0.0f), b1 > 0.49117172f);
     }

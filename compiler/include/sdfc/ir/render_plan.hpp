@@ -139,6 +139,18 @@ struct MaterialDef {
   // What walks the palette: the orbit trap, or the smooth iteration count
   // (`orbit_trap.source: iteration`).
   enum class TrapSource { Trap, Iteration } trap_source = TrapSource::Trap;
+  // Where each palette colour sits along the palette, ascending in [0, 1]
+  // (evenly spaced for `palette:`, as written for `gradient:`).
+  std::vector<double> trap_positions;
+  // The value range that spans the palette once: `range: [lo, hi]`, or
+  // (trap_range_auto, the default) the range the value takes over the
+  // fractal's surface, found when the kernel is emitted (codegen/trap_range).
+  bool trap_range_auto = true;
+  double trap_lo = 0, trap_hi = 1;
+  // palette position = (value - lo) / (hi - lo) * cycles + offset, then
+  // clamped, wrapped (repeat) or reflected (mirror) into [0, 1].
+  double trap_offset = 0, trap_cycles = 1;
+  enum class TrapRepeat { Clamp, Repeat, Mirror } trap_repeat = TrapRepeat::Clamp;
   double reflectivity = 0;  // reflectance at normal incidence (Fresnel-Schlick R0)
   SourceLoc loc;
 };
