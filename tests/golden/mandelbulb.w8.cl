@@ -411,6 +411,7 @@ vec3 sdfc_segment(TIME_PARAM vec3 ro, vec3 rd, mask active, real pixel_angle, re
     active = active & ray_box(ro, rd, v3(-2.041f, -2.041f, -1.391f), v3(2.041f, 2.041f, 1.1450895f), &t0, &t1);
     t1 = fmin(t1, 50.0f);
     (void)jitter;
+    active = active & (t0 < t1);  // render.max_distance from the first step on
     real t, steps;
     mask hit = march_sphere_trace(TIME_ARG ro, rd, t0, t1, active, pixel_angle, 0.5f, 1.0f, 256, &t, &steps);
     vec3 color = shade_background(rd, v3(0.0f, 0.0f, 1.0f), v3(0.45f, 0.55f, 0.7f), v3(0.15f, 0.17f, 0.22f));
