@@ -3,7 +3,7 @@
 // the scene's own render.precision). A SceneError is the expected
 // outcome for bad input. Every kernel emitted must hold only printable ASCII
 // and no text of the input outside kernel_text()'s escaping: the file name
-// carries a preprocessor line that must never appear raw.
+// carries a preprocessor line that must never start a line of the kernel.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -22,7 +22,8 @@ const std::string kFileName = "fz\n#error injected\r*/?\?/\\.yaml";
 
 void check_kernel(const std::string& src) {
   if (!sdfc::codegen::kernel_source_is_plain(src)) std::abort();
-  if (src.find("#error injected") != std::string::npos) std::abort();
+  // Escaped, the line stays inside its comment; raw, it would start a line.
+  if (src.find("\n#error injected") != std::string::npos) std::abort();
 }
 
 }  // namespace

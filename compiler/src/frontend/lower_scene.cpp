@@ -72,8 +72,8 @@ void read_camera(ValueReader& r, const SourceValue& v, ir::Camera& cam) {
   cam.target = m.vec3("target", cam.target);
   cam.up = m.direction("up", cam.up);
   cam.fov_degrees = m.number("fov", cam.fov_degrees, {0, 179, true});
-  if (cam.fov_degrees > 0 && cam.fov_degrees < 0.01)  // every ray would be one ray
-    too_small(r, *m.get("fov"), "camera.fov", cam.fov_degrees, 0.01);
+  if (cam.fov_degrees > 0 && cam.fov_degrees < 1e-6)  // the pixel footprint would underflow: no ray hits
+    too_small(r, *m.get("fov"), "camera.fov", cam.fov_degrees, 1e-6);
   cam.aperture = m.number("aperture", cam.aperture, Range::non_negative(1e3));
   cam.focus_distance = m.number("focus_distance", cam.focus_distance, Range::non_negative());
   const SourceLoc up_loc = m.get("up") ? m.get("up")->loc : v.loc;

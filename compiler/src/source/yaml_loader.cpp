@@ -117,6 +117,22 @@ bool deepest_flow_bracket(const std::string& text, int limit, int& line, int& co
 }  // namespace
 
 
+// The line of a "---" marker that starts a second document, or 0.
+static int second_document_line(const std::string& text) {
+  bool content = false;
+  int line = 1;
+  for (size_t i = 0; i < text.size(); ++line) {
+    size_t end = std::min(text.find('\n', i), text.size());
+    std::string_view l(text.data() + i, end - i);
+    const bool marker = l.substr(0, 3) == "---" && (l.size() == 3 || l[3] == ' ' || l[3] == '\t' || l[3] == '\r');
+    if (marker && content) return line;
+    const size_t first = l.find_first_not_of(" \t\r");
+    if (!marker && first != std::string_view::npos && l[first] != '#') content = true;
+    i = end + 1;
+  }
+  return 0;
+}
+
 SourceValue load_yaml_text(const std::string& text, const std::string& name) {
   auto file = std::make_shared<const std::string>(name);
   // yaml-cpp accepts some binary input silently; reject it with a clear message.
@@ -140,11 +156,14 @@ SourceValue load_yaml_text(const std::string& text, const std::string& name) {
   }
   YAML::Node root;
   try {
-    std::vector<YAML::Node> docs = YAML::LoadAll(text);
-    if (docs.size() > 1)
-      fail(loc_of(docs[1].Mark(), file), "a second YAML document (after '---'); a scene file holds one",
+    // yaml-cpp's LoadAll loops for minutes on some junk (", x"), so the
+    // second document is found by its marker: a line starting "---" after
+    // any content (YAML forbids it inside a scalar).
+    if (int line = second_document_line(text)) {
+      fail(SourceLoc(file, line, 1), "a second YAML document (after '---'); a scene file holds one",
            "remove the '---' line or split the file");
-    if (!docs.empty()) root = docs[0];
+    }
+    root = YAML::Load(text);
   } catch (const YAML::DeepRecursion& e) {
     // yaml-cpp's own guard (deeper than ours, so the same message fits).
     SourceLoc at = loc_of(e.mark, file);
