@@ -14,6 +14,7 @@
 #include <sdfrt/renderer.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <map>
 
@@ -61,7 +62,15 @@ TEST_P(RandomScenes, EveryAcceptedSceneBuildsAndRendersAlikeAtEveryWidth) {
       double_builds = 0, nonfinite = 0;
   double worst_precision = 0;
   std::map<std::string, int> refusals;
+  int done = 0;
   for (long seed = first + GetParam(); seed < first + count; seed += kShards) {
+    if (++done % 25 == 0) {  // long runs (bench/random_scenes) show their counts as they go
+      std::printf("random scenes so far (shard %d): %d accepted, %d refused, %d build failures, %d other errors, "
+                  "%d NaN images, %d of %d widths identical\n",
+                  GetParam(), accepted, refused, build_failures, crashes, nonfinite, width_checks - width_mismatches,
+                  width_checks);
+      std::fflush(stdout);
+    }
     std::string yaml = random_scene(std::uint64_t(seed));
     std::string stage = "compile";
     try {
