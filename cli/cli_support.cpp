@@ -5,18 +5,36 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <sdfrt/errors.hpp>
+#include <sdfrt/output_file.hpp>
+
+#include "sdfc/scene_caps.hpp"
 
 namespace sdfc::cli {
 
 void SceneArgs::add_to(CLI::App& cmd) {
-  cmd.add_option("scene", path, "Scene file (YAML)")->required();
+  cmd.add_option("scene", path, "Scene file (YAML)")->required()->each([](const std::string& p) { sdfrt::protect_input(p); });
   cmd.add_option("--set", sets, "Override a scene value by its path, e.g. --set render.width=640 "
                                 "--set scene.union.0.mandelbulb.power=7 (repeatable)");
+  cmd.add_flag_callback("--allow-slow", [] { scene_caps().allow_slow = true; },
+                        "Accept a scene whose estimated cost per sample is over the limit (see docs/security.md)");
+}
+
+const CLI::Validator& finite_number() {
+  static const CLI::Validator v(
+      [](std::string& s) {
+        char* end = nullptr;
+        const double x = std::strtod(s.c_str(), &end);
+        return std::isfinite(x) ? std::string() : "expected a finite number, got " + s;
+      },
+      "FINITE");
+  return v;
 }
 
 void write_text_output(const std::string& path, const std::string& text) {
@@ -24,31 +42,7 @@ void write_text_output(const std::string& path, const std::string& text) {
     std::cout << text << std::flush;
     return;
   }
-  std::error_code ec;
-  auto st = std::filesystem::status(path, ec);
-  if (!ec && std::filesystem::exists(st) && !std::filesystem::is_regular_file(st)) {
-    // /dev/null, a FIFO, a terminal: nothing to protect by renaming, write through.
-    FILE* f = std::fopen(path.c_str(), "wb");
-    bool ok = f && std::fwrite(text.data(), 1, text.size(), f) == text.size();
-    if (f) ok = std::fclose(f) == 0 && ok;
-    if (!ok) throw sdfrt::IoError(fmt::format("cannot write {}: {}", path, std::strerror(errno)), path, errno);
-    return;
-  }
-  std::string tmpl = path + ".tmp-XXXXXX";
-  std::vector<char> name(tmpl.begin(), tmpl.end());
-  name.push_back('\0');
-  int fd = mkstemp(name.data());
-  if (fd < 0) throw sdfrt::IoError(fmt::format("cannot write {}: {}", path, std::strerror(errno)), path, errno);
-  FILE* f = fdopen(fd, "wb");
-  bool ok = f && std::fwrite(text.data(), 1, text.size(), f) == text.size();
-  ok = f && std::fflush(f) == 0 && ok;
-  int err = errno;
-  if (f) std::fclose(f);
-  if (!ok || std::rename(name.data(), path.c_str()) != 0) {
-    err = ok ? errno : err;
-    std::remove(name.data());
-    throw sdfrt::IoError(fmt::format("cannot write {}: {}", path, std::strerror(err)), path, err);
-  }
+  sdfrt::write_output_file(path, text);
 }
 
 // 16 lanes fill AVX-512 and measured fastest on PoCL here (802 ms vs 1031 ms at 8

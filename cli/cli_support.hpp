@@ -7,6 +7,7 @@
 
 namespace CLI {
 class App;
+class Validator;
 }
 
 namespace sdfc::cli {
@@ -17,6 +18,9 @@ struct SceneArgs {
   std::vector<std::string> sets;
   void add_to(CLI::App& cmd);
 };
+
+// A CLI11 check that refuses NaN and infinities (CLI::Range lets NaN through).
+const CLI::Validator& finite_number();
 
 // Writes text to `path` through a temporary file and a rename ("-" = stdout).
 void write_text_output(const std::string& path, const std::string& text);

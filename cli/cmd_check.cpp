@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "cli_support.hpp"
+#include "sdfc/scene_caps.hpp"
 #include "commands.hpp"
 #include "sdfc/compile.hpp"
 #include "sdfc/ir/printer.hpp"
@@ -34,6 +35,8 @@ int run_check(const SceneArgs& args) {
   fmt::print("geometry: {} IR nodes ({} as written), class {}, L = {}, cost ~{:.0f}\n", ir::count_nodes(m),
              lowered_nodes, ir::to_string(root.cls), root.lipschitz, root.cost);
   fmt::print("  bounds {}\n", box_text(root.bounds));
+  fmt::print("  work per sample ~{:.3g} (limit {:.3g}, see docs/security.md)\n", estimated_cost_per_sample(m),
+             scene_caps().max_cost_per_sample);
   // Every node with its class and Lipschitz constant, and where the kernel
   // divides by L (issue 9: the correction is local to that subtree).
   int corrected = 0, steep = 0;

@@ -3,6 +3,7 @@
 // the image (PNG, EXR, PFM, JPEG) or video (MP4, MKV, WebM) the name asks
 // for, and any AOVs, through temporary files.
 #include <fmt/format.h>
+#include <sdfrt/output_file.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -27,13 +28,19 @@
 #include "output_format.hpp"
 #include "video_output.hpp"
 #include "sdfc/compile.hpp"
+#include "sdfc/expr/expr.hpp"
 
 namespace sdfc::cli {
 
 namespace {
 
 std::atomic<bool> g_cancel{false};
-extern "C" void on_sigint(int) { g_cancel = true; }
+// The first Ctrl-C stops the render cleanly (within a launch slice); a
+// second one ends the process at once.
+extern "C" void on_sigint(int) {
+  g_cancel = true;
+  std::signal(SIGINT, SIG_DFL);
+}
 
 // PoCL calls abort() when it cannot write its own kernel cache (a full disk,
 // `ulimit -f`): say what probably happened, then die as before.
@@ -83,10 +90,17 @@ void make_reference(ir::MarchSettings& s, double eps, int grid, std::vector<std:
 }
 
 std::string read_kernel_file(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw std::invalid_argument(fmt::format("--kernel: cannot read {}", path));
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw std::invalid_argument(fmt::format("--kernel: {} is not a file", path));
+  if (std::filesystem::file_size(path, ec) > (64u << 20))
+    throw std::invalid_argument(fmt::format("--kernel: {} is larger than 64 MiB; it is no kernel", path));
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::invalid_argument(fmt::format("--kernel: cannot read {}", path));
   std::stringstream ss;
   ss << in.rdbuf();
+  if (ss.str().empty()) throw std::invalid_argument(fmt::format("--kernel: {} is empty", path));
   return ss.str();
 }
 
@@ -186,6 +200,10 @@ int run_render(RenderArgs a) {
 
   std::vector<int> frames = a.frames.empty() ? std::vector<int>{0} : parse_frames(a.frames);
   const bool sequence = !a.frames.empty();
+  if (frames.back() / a.fps > expr::kMaxTime)  // animated values are checked for t in [0, kMaxTime] only
+    throw std::invalid_argument(fmt::format("--frames: frame {} is at t = {:.3g} s at {} fps, past the {:g} s over which "
+                                            "animated values are checked",
+                                            frames.back(), frames.back() / a.fps, a.fps, expr::kMaxTime));
   const bool video = is_video(format);
   if (video && has_frame_field(a.output))
     throw std::invalid_argument(fmt::format("-o '{}': a video is one file; drop the frame-number field", a.output));
@@ -294,10 +312,13 @@ Action add_render(CLI::App& app) {
       ->check(CLI::IsMember(kAovNames));
   cmd->add_option("--frames", a->frames, "Render frames N, FIRST:LAST or FIRST:LAST:STEP at time = frame / fps; "
                                          "-o then needs a field such as %04d");
-  cmd->add_option("--fps", a->fps, "Frames per second for --frames (default 30)")->check(CLI::Range(0.001, 10000.0));
+  cmd->add_option("--fps", a->fps, "Frames per second for --frames (default 30)")
+      ->check(CLI::Range(0.001, 10000.0))
+      ->check(finite_number());
   cmd->add_option("--kernel", a->kernel_file,
                   "Build this OpenCL file instead of the generated kernel (a hand-edited 'sdfc compile' output "
-                  "for the same scene, --simd-width and --packet-rows)");
+                  "for the same scene, --simd-width and --packet-rows)")
+      ->each([](const std::string& p) { sdfrt::protect_input(p); });
   cmd->add_flag("--reference", a->reference,
                 "Reference render of the same view: an 8x8 grid of rays per pixel (--reference-samples), double "
                 "precision, hit epsilon 0.01 px, 20000 steps, step factor 0.5, bisection of every hit, central "
@@ -305,7 +326,8 @@ Action add_render(CLI::App& app) {
   cmd->add_option("--reference-epsilon", a->reference_epsilon,
                   "The reference's hit epsilon in pixel footprints (a convergence check: the reference is trusted "
                   "where a 10x smaller value changes nothing)")
-      ->check(CLI::Range(1e-12, 1.0));
+      ->check(CLI::Range(1e-12, 1.0))
+      ->check(finite_number());
   cmd->add_option("--reference-samples", a->reference_samples,
                   "The reference's rays per pixel: an N x N stratified grid (default 8: 64 rays; 1 = the pixel centre)")
       ->check(CLI::Range(1, 32));

@@ -25,9 +25,13 @@ std::vector<int> parse_frames(const std::string& spec) {
   std::smatch m;
   if (!std::regex_match(spec, m, re))
     throw std::invalid_argument(fmt::format("--frames '{}': expected N, FIRST:LAST or FIRST:LAST:STEP (e.g. 0:120)", spec));
-  int first = std::stoi(m[1]);
-  int last = m[2].matched ? std::stoi(m[2]) : first;
-  int step = m[3].matched ? std::stoi(m[3]) : 1;
+  auto number = [&](const std::string& digits) {
+    if (digits.size() > 9) throw std::invalid_argument(fmt::format("--frames '{}': frame numbers go up to 999999999", spec));
+    return std::stoi(digits);
+  };
+  int first = number(m[1]);
+  int last = m[2].matched ? number(m[2]) : first;
+  int step = m[3].matched ? number(m[3]) : 1;
   if (last < first || step < 1)
     throw std::invalid_argument(fmt::format("--frames '{}': LAST must not be before FIRST and STEP must be at least 1", spec));
   if ((last - first) / step >= 100000) throw std::invalid_argument(fmt::format("--frames '{}': more than 100000 frames", spec));
@@ -50,6 +54,8 @@ std::string frame_path(const std::string& pattern, int frame) {
     throw std::invalid_argument(fmt::format(
         "-o '{}': a sequence needs one frame-number field such as %04d in the file name", pattern));
   std::string flags = m[1];
+  if (flags.size() > 2)  // %0Nd up to 99 digits wide; a wider field is a typo, not a name
+    throw std::invalid_argument(fmt::format("-o '{}': the frame field is wider than 99 digits", pattern.substr(0, 200)));
   int width = flags.empty() ? 0 : std::stoi(flags);
   std::string num = fmt::format("{}", frame);
   if (static_cast<int>(num.size()) < width) num = std::string(width - num.size(), flags[0] == '0' ? '0' : ' ') + num;

@@ -61,10 +61,10 @@ int main(int argc, char** argv) {
     std::cerr << e.what() << "\n";
     return kSceneError;
   } catch (const sdfrt::DeviceError& e) {
-    std::cerr << "sdfc: device error: " << e.what() << "\n";
+    std::cerr << "sdfc: device error: " << sdfc::printable(e.what(), 100000) << "\n";
     return kDeviceError;
   } catch (const sdfrt::IoError& e) {
-    std::cerr << "sdfc: " << e.what() << "\n";
+    std::cerr << "sdfc: " << sdfc::printable(e.what()) << "\n";
     return kOutputError;
   } catch (const sdfrt::Cancelled&) {
     std::cerr << "sdfc: cancelled\n";
@@ -73,10 +73,10 @@ int main(int argc, char** argv) {
     std::cerr << "sdfc: out of memory\n";
     return kDeviceError;
   } catch (const std::invalid_argument& e) {
-    std::cerr << "sdfc: " << e.what() << "\n";
+    std::cerr << "sdfc: " << sdfc::printable(e.what()) << "\n";
     return kUsageError;
   } catch (const std::exception& e) {
-    std::cerr << "sdfc: internal error: " << e.what() << "\n";
+    std::cerr << "sdfc: internal error: " << sdfc::printable(e.what()) << "\n";
     return 70;
   }
   return kUsageError;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "sdfc/frontend/lower_scene.hpp"
+#include "sdfc/scene_caps.hpp"
 #include "sdfc/source/overrides.hpp"
 #include "sdfc/source/yaml_loader.hpp"
 
@@ -17,6 +18,9 @@ namespace {
 // faster than that count: 1 000 translated spheres (2 002 statements) build in
 // 16 s, 10 000 in 365 s (2 busy cores). Refuse before emitting.
 constexpr double kMaxKernelNodes = 4096;
+// Each light writes its shading (and shadow loop) into the kernel: 3 000
+// point lights with soft shadows took 117 s to build. One counts as this many nodes.
+constexpr double kNodesPerLight = 16;
 
 void check_kernel_size(const ir::Module& m) {
   if (m.root == ir::kNoNode) return;
@@ -27,12 +31,13 @@ void check_kernel_size(const ir::Module& m) {
     for (ir::NodeId c : g.node(id).children) n += paths[c];
     paths[id] = n;
   }
+  paths[m.root] += kNodesPerLight * double(m.plan.lights.size());
   if (paths[m.root] > kMaxKernelNodes)
     fail(g.node(m.root).loc,
          fmt::format("the scene makes a kernel of {:.0f} node evaluations, more than the limit of {:.0f}: the OpenCL "
                      "build time grows faster than the kernel (10 000 spheres take minutes to build)",
                      paths[m.root], kMaxKernelNodes),
-         "use fewer, larger shapes or split the scene");
+         "use fewer, larger shapes or fewer lights (each light counts as 16 nodes), or split the scene");
 }
 
 double ms_since(std::chrono::steady_clock::time_point t0) {
@@ -56,6 +61,7 @@ ir::Module build_module(const SourceValue& doc, const std::string& source_name, 
   m = passes::run_pipeline(std::move(m), after, t ? &t->per_pass : nullptr);
   if (t) t->passes_ms = ms_since(t1);
   check_kernel_size(m);
+  check_scene_cost(m);
   return m;
 }
 

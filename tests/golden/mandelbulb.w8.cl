@@ -571,6 +571,7 @@ vec3 sdfc_segment(TIME_PARAM vec3 ro, vec3 rd, mask active, real pixel_angle, re
     active = active & ray_box(ro, rd, v3(-3.061f, -3.061f, -1.361f), v3(3.061f, 3.061f, 1.1650895f), &t0, &t1);
     t1 = fmin(t1, 50.0f);
     (void)jitter;
+    active = active & (t0 < t1);  // render.max_distance from the first step on
     real t, steps;
     mask hit = march_sphere_trace(TIME_ARG ro, rd, t0, t1, active, pixel_angle, 0.5f, 1.0f, 256, &t, &steps);
     vec3 color = shade_background(rd, v3(0.0f, 0.0f, 1.0f), v3(0.32f, 0.42f, 0.6f), v3(0.08f, 0.09f, 0.12f));

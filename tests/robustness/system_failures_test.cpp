@@ -169,6 +169,7 @@ TEST(SystemFailures, FullDiskDuringTheDriversKernelBuildIsExplained) {
 struct Interrupted {
   int code;
   std::string err;
+  double ms_to_exit = 0;  // from the signal to the process's end
 };
 
 // The tiles done in the last progress line ("717/1024 tiles ..."), or -1.
@@ -183,11 +184,11 @@ int tiles_done(const std::string& err) {
 // waits until its progress shows more than `min_tiles` tiles done, sends
 // SIGINT (what Ctrl-C does) and returns how it ended.
 Interrupted render_and_interrupt(const ScratchDir& dir, const std::vector<std::string>& extra, int side = 2048,
-                                 int min_tiles = 0) {
+                                 int min_tiles = 0, int signal = SIGINT, int tile = 32) {
   std::string err_path = dir.file("stderr");
   std::string out_png = dir.file("big.png");
   std::vector<std::string> args = {SDFC_BINARY, "render", "examples/mandelbulb.yaml", "--width", std::to_string(side),
-                                   "--height", std::to_string(side), "--tile", "32", "-o", out_png};
+                                   "--height", std::to_string(side), "--tile", std::to_string(tile), "-o", out_png};
   args.insert(args.end(), extra.begin(), extra.end());
   pid_t pid = fork();
   if (pid == 0) {
@@ -203,15 +204,23 @@ Interrupted render_and_interrupt(const ScratchDir& dir, const std::vector<std::s
   // Readiness wait, not a timing assertion: the progress lines appear once
   // the kernel is built and tiles are done.
   auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(3);
-  while (tiles_done(read_text(err_path)) <= min_tiles && std::chrono::steady_clock::now() < deadline) {
+  // min_tiles < 0: wait for the kernel build, then a second into the first tile.
+  auto ready = [&] {
+    std::string err = read_text(err_path);
+    return min_tiles < 0 ? err.find("kernel built") != std::string::npos : tiles_done(err) > min_tiles;
+  };
+  while (!ready() && std::chrono::steady_clock::now() < deadline) {
     int st = 0;
     if (waitpid(pid, &st, WNOHANG) == pid) return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, read_text(err_path)};
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
-  kill(pid, SIGINT);
+  if (min_tiles < 0) std::this_thread::sleep_for(std::chrono::seconds(1));
+  auto signalled = std::chrono::steady_clock::now();
+  kill(pid, signal);
   int st = 0;
   waitpid(pid, &st, 0);
-  return {WIFEXITED(st) ? WEXITSTATUS(st) : 128 + WTERMSIG(st), read_text(err_path)};
+  double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - signalled).count();
+  return {WIFEXITED(st) ? WEXITSTATUS(st) : 128 + WTERMSIG(st), read_text(err_path), ms};
 }
 
 // Rows of an image that are all black, and rows with some light.
@@ -238,6 +247,27 @@ TEST(SystemFailures, CtrlCLeavesTheFinalNameUntouched) {
   EXPECT_NE(r.err.find("--keep-partial"), std::string::npos) << "says how to keep the tiles: " << r.err;
   EXPECT_EQ(entries(dir.path()), (std::vector<std::string>{"big.png", "stderr"})) << "no temp or partial file";
   EXPECT_EQ(read_text(dir.file("big.png")), "the previous image");
+}
+
+// One 2048x2048 tile of the Mandelbulb at 100000 steps takes minutes; the
+// renderer launches it in slices of about 100 ms, so Ctrl-C still stops it
+// at once. The bound is loose (a loaded machine); before the slices the
+// process went on until the tile was done.
+TEST(SystemFailures, CtrlCStopsWithinAOneTileRenderAtOnce) {
+  ScratchDir dir;
+  Interrupted r = render_and_interrupt(dir, {"--set", "render.max_steps=100000", "--set", "render.hit_epsilon=0.01"},
+                                       2048, -1, SIGINT, 2048);
+  EXPECT_EQ(r.code, 130) << r.err;
+  EXPECT_LT(r.ms_to_exit, 5000) << "Ctrl-C took " << r.ms_to_exit << " ms";
+}
+
+// The output's temp file has no name until it is complete (O_TMPFILE), so
+// even a SIGKILL mid-render leaves nothing beside the output.
+TEST(SystemFailures, SigkillLeavesNoTempFile) {
+  ScratchDir dir;
+  Interrupted r = render_and_interrupt(dir, {}, 2048, 8, SIGKILL);
+  EXPECT_EQ(r.code, 128 + SIGKILL) << r.err;
+  EXPECT_EQ(entries(dir.path()), (std::vector<std::string>{"stderr"})) << "no temp file left";
 }
 
 TEST(SystemFailures, CtrlCWithKeepPartialWritesTheTilesDoneToAPartialFile) {

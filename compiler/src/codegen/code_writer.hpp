@@ -3,6 +3,8 @@
 // precision and an indenting line writer.
 #include <fmt/format.h>
 
+#include <cmath>
+#include <limits>
 #include <string>
 
 #include "sdfc/expr/expr.hpp"
@@ -17,6 +19,10 @@ class Literals {
   explicit Literals(ir::Precision p) : p_(p) {}
   // Shortest spelling that reads back exactly in the kernel's precision.
   std::string real(double v) const {
+    // Folded scales can multiply past the float range: the largest finite
+    // value rather than "inff", which does not compile.
+    if (p_ == ir::Precision::Float && std::isfinite(v) && !std::isfinite(static_cast<float>(v)))
+      v = v > 0 ? std::numeric_limits<float>::max() : -std::numeric_limits<float>::max();
     std::string s = p_ == ir::Precision::Float ? fmt::format("{}", static_cast<float>(v)) : fmt::format("{}", v);
     if (s.find_first_of(".en") == std::string::npos) s += ".0";
     return p_ == ir::Precision::Float ? s + "f" : s;

@@ -40,7 +40,8 @@ void hybrid_steps(const ir::Node& n, const std::string& p, const Literals& lit, 
   for (int s = 0; s < steps; ++s) {
     const double* st = &q[3 + s * ir::kHybridStepParams];
     upto += int(st[1]);
-    std::string cond = s + 1 == steps ? "else" : fmt::format("{}if (k < {})", s ? "else " : "", upto);
+    // The last step is the else branch; a one-step hybrid has no branch at all.
+    std::string cond = s + 1 == steps ? (s ? "else" : "") : fmt::format("{}if (k < {})", s ? "else " : "", upto);
     const bool bulb = st[0] == double(ir::HybridStep::Mandelbulb);
     used.insert(bulb ? "hybrid_bulb_step" : "hybrid_box_step");
     std::string call = bulb ? fmt::format("hybrid_bulb_step(z, {}, {}, &{})", lit.real(st[2]), p, dr)

@@ -10,6 +10,7 @@
 
 #include "catalogue_emitter.hpp"
 #include "fractal_emitter.hpp"
+#include "kernel_text.hpp"
 #include "sdfc/expr/expr.hpp"
 #include "sdfc/ir/analyses.hpp"
 
@@ -91,14 +92,14 @@ class SceneEmitter {
     std::string f = n.loc.file ? *n.loc.file : file_;
     size_t slash = f.find_last_of('/');
     if (slash != std::string::npos) f = f.substr(slash + 1);
-    return fmt::format("  ({}:{})", f, n.loc.line);
+    return fmt::format("  ({}:{})", kernel_text(f), n.loc.line);
   }
 
   std::string describe(const ir::Node& n) const {
     const ir::KindInfo& k = ir::info(n.kind);
     std::string s(k.name);
     for (size_t i = 0; i < n.params.size() && n.kind != Kind::Rotate; ++i) {
-      if (const auto& e = n.animation(i)) s += fmt::format(" {}=\"{}\"", k.params[i], expr::to_string(e));
+      if (const auto& e = n.animation(i)) s += fmt::format(" {}=\"{}\"", k.params[i], kernel_text(expr::to_string(e)));
       else s += fmt::format(" {}={}", k.params[i], n.params[i]);
     }
     if (n.kind == Kind::Rotate && n.animated()) s += " (animated)";
@@ -126,7 +127,7 @@ class SceneEmitter {
     const ir::MaterialDef& md = plan_.materials.at(size_t(cur_mat_));
     const bool traps = orbit_traps_;
     std::string rec = var("r");
-    w_.line(fmt::format("mat_record {};  // material {} '{}'", rec, cur_mat_, md.name));
+    w_.line(fmt::format("mat_record {};  // material {} '{}'", rec, cur_mat_, kernel_text(md.name)));
     std::string trap;
     if (traps) {
       trap = lit_.typed(0);
@@ -310,7 +311,7 @@ class SceneEmitter {
             e, [&](std::string_view var) { return var == "time" ? std::string("time") : p + "." + std::string(var); },
             [&](double x) { return lit_.typed(x); });
         std::string d = var("d");
-        w_.line(fmt::format("real {} = {} + {};  // displace {}{}", d, c.d, body, expr::to_string(e), where(n)));
+        w_.line(fmt::format("real {} = {} + {};  // displace {}{}", d, c.d, body, kernel_text(expr::to_string(e)), where(n)));
         return with_d(c, d);
       }
       default:

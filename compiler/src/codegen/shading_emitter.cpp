@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "palette_emitter.hpp"
+#include "kernel_text.hpp"
 
 namespace sdfc::codegen::detail {
 
@@ -13,7 +14,7 @@ std::string where(const SourceLoc& loc) {
   std::string f = loc.file ? *loc.file : "";
   size_t slash = f.find_last_of('/');
   if (slash != std::string::npos) f = f.substr(slash + 1);
-  return fmt::format("{}:{}", f, loc.line);
+  return fmt::format("{}:{}", kernel_text(f), loc.line);
 }
 
 
@@ -57,13 +58,13 @@ std::string emit_shading(const ir::RenderPlan& plan, const ir::Analyses& facts, 
   w.line("// ---- materials: id -> albedo, specular, shininess ----");
   w.line("void material_of(real id, vec3* albedo, real* specular, real* shininess" + trap_param + ")");
   w.open("{");
-  w.line(fmt::format("*albedo = {};  // material 0 '{}'", lit.vec3(mats[0].color), mats[0].name));
+  w.line(fmt::format("*albedo = {};  // material 0 '{}'", lit.vec3(mats[0].color), kernel_text(mats[0].name)));
   w.line(fmt::format("*specular = {};", lit.typed(mats[0].specular)));
   w.line(fmt::format("*shininess = {};", lit.typed(mats[0].shininess)));
   if (mats.size() == 1) w.line("(void)id;");
   for (size_t i = 1; i < mats.size(); ++i) {
     const auto& md = mats[i];
-    w.line(fmt::format("// material {} '{}' ({})", i, md.name, where(md.loc)));
+    w.line(fmt::format("// material {} '{}' ({})", i, kernel_text(md.name), where(md.loc)));
     w.line(fmt::format("mask is{} = id == {};", i, lit.real(double(i))));
     w.line(fmt::format("*albedo = v3_select(*albedo, {}, is{});", lit.vec3(md.color), i));
     w.line(fmt::format("*specular = SEL(*specular, {}, is{});", lit.typed(md.specular), i));
@@ -81,7 +82,7 @@ std::string emit_shading(const ir::RenderPlan& plan, const ir::Analyses& facts, 
     if (mats.size() == 1) w.line("(void)id;");
     for (size_t i = 1; i < mats.size(); ++i)
       w.line(fmt::format("r = SEL(r, {}, id == {});  // '{}'", lit.typed(mats[i].reflectivity), lit.real(double(i)),
-                         mats[i].name));
+                         kernel_text(mats[i].name)));
     w.line("return r;");
     w.close("}");
     w.blank();

@@ -9,6 +9,8 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <unordered_map>
+#include <algorithm>
 
 #include "functions.hpp"
 #include "sdfc/expr/expr.hpp"
@@ -19,6 +21,14 @@ namespace {
 
 // Deeper nesting than this is refused rather than risking the stack.
 constexpr int kMaxDepth = 100;
+// Caps on what one expression may hold, so that every pass over its tree
+// (folding, intervals, derivatives, printing, the emitted OpenCL, where
+// clang allows 256 nested brackets) recurses at most kMaxHeight deep
+// however long the input is: a chain "1+1+1+..." is one level per term.
+constexpr int kMaxHeight = 120;
+constexpr size_t kMaxLength = 8000;
+// Expressions in messages are cut to this many characters.
+constexpr size_t kEchoLength = 80;
 
 class Parser {
  public:
@@ -26,6 +36,9 @@ class Parser {
       : s_(text), at_(at), vars_(vars) {}
 
   ExprPtr parse() {
+    if (s_.size() > kMaxLength)
+      error(0, fmt::format("the expression is {} characters long; at most {} are allowed", s_.size(), kMaxLength),
+            "split it over several shapes or simplify it");
     ExprPtr e = sum();
     skip();
     if (i_ < s_.size()) error(i_, fmt::format("unexpected '{}'", s_[i_]), "expected an operator or the end");
@@ -36,7 +49,9 @@ class Parser {
   [[noreturn]] void error(size_t offset, std::string msg, std::string hint = {}) const {
     SourceLoc loc = at_;
     if (loc.line > 0) loc.column += static_cast<int>(offset);
-    fail(loc, "in expression \"" + std::string(s_) + "\": " + msg, std::move(hint));
+    std::string shown(s_.substr(0, kEchoLength));
+    if (s_.size() > kEchoLength) shown += "...";
+    fail(loc, "in expression \"" + shown + "\": " + msg, std::move(hint));
   }
 
   void skip() {
@@ -54,6 +69,12 @@ class Parser {
     e->args = std::move(args);
     e->value = v;
     e->name = std::move(name);
+    int h = 1;
+    for (const auto& a : e->args) h = std::max(h, 1 + height_[a.get()]);
+    if (h > kMaxHeight)
+      error(at, fmt::format("more than {} operations deep (a chain of + or * counts one level per term)", kMaxHeight),
+            "use fewer terms, or group them in parentheses such as (a+b)+(c+d)");
+    height_[e.get()] = h;
     return e;
   }
   struct Depth {
@@ -180,6 +201,7 @@ class Parser {
   const std::vector<std::string>& vars_;
   size_t i_ = 0;
   int depth_ = 0;
+  std::unordered_map<const Expr*, int> height_;  // tree height of each node built
 };
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "animated_node.hpp"
 #include "catalogue_schema.hpp"
 #include "domain_schema.hpp"
+#include "too_small.hpp"
 
 namespace sdfc::frontend {
 
@@ -266,9 +267,11 @@ NodeId GeometryLowering::apply_modifiers(const SourceValue& node, NodeId n) {
   if (const SourceValue* s = node.find("scale"); s && s->is_seq()) {
     // Non-uniform: the distance is corrected by the smallest factor (a bound).
     Vec3d f = r_.vec3(*s, "scale", {0, 1e4, true});
+    if (std::min({f[0], f[1], f[2]}) < kMinScale) too_small(r_, *s, "scale", std::min({f[0], f[1], f[2]}), kMinScale);
     n = b_.make(Kind::ScaleXYZ, {f[0], f[1], f[2]}, {n}, s->loc);
   } else if (s) {
     Param f = r_.param(*s, "scale", {0, 1e4, true});
+    if (f.lo > 0 && f.lo < kMinScale) too_small(r_, *s, "scale", f.lo, kMinScale);
     n = make_node(b_, Kind::Scale, {f}, {n}, s->loc);
   }
   if (const SourceValue* rot = node.find("rotate")) {

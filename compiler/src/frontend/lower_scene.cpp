@@ -10,6 +10,8 @@
 #include "sdfc/frontend/geometry_schema.hpp"
 #include "sdfc/ir/dual_normals.hpp"
 #include "sdfc/frontend/value_reader.hpp"
+#include "too_small.hpp"
+#include "scene_name.hpp"
 #include "read_effects.hpp"
 #include "read_orbit_trap.hpp"
 
@@ -21,6 +23,8 @@ using frontend::MapReader;
 using frontend::Range;
 using frontend::ValueReader;
 using frontend::Vec3d;
+using frontend::too_small;
+using frontend::scene_name;
 
 double dot(const Vec3d& a, const Vec3d& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
@@ -69,6 +73,8 @@ void read_camera(ValueReader& r, const SourceValue& v, ir::Camera& cam) {
   cam.target = m.vec3("target", cam.target);
   cam.up = m.direction("up", cam.up);
   cam.fov_degrees = m.number("fov", cam.fov_degrees, {0, 179, true});
+  if (cam.fov_degrees > 0 && cam.fov_degrees < 1e-6)  // the pixel footprint would underflow: no ray hits
+    too_small(r, *m.get("fov"), "camera.fov", cam.fov_degrees, 1e-6);
   cam.aperture = m.number("aperture", cam.aperture, Range::non_negative(1e3));
   cam.focus_distance = m.number("focus_distance", cam.focus_distance, Range::non_negative());
   const SourceLoc up_loc = m.get("up") ? m.get("up")->loc : v.loc;
@@ -99,12 +105,15 @@ void read_render(ValueReader& r, const SourceValue& v, ir::MarchSettings& s) {
   s.step_factor = m.number("step_factor", s.step_factor, {0, 2, true});
   s.lipschitz_correction = m.word("lipschitz_correction", "true", {"true", "false"}) == "true";
   s.gamma = m.number("gamma", s.gamma, {0, 10, true});
+  if (s.gamma > 0 && s.gamma < 0.05) too_small(r, *m.get("gamma"), "render.gamma", s.gamma, 0.05);  // 1/gamma is a literal
   std::string normals = m.word("normals", "tetrahedral", {"tetrahedral", "central", "dual"});
   s.normals = normals == "central" ? ir::NormalMethod::Central
               : normals == "dual"  ? ir::NormalMethod::Dual
                                    : ir::NormalMethod::Tetrahedral;
   if (v.find("normal_step")) s.normal_step_floor = 1e-12;  // a chosen step is taken as it is
   s.normal_step = m.number("normal_step", s.normal_step, {0, 100, true});
+  if (s.normal_step > 0 && s.normal_step < 1e-6)  // the normal would be zero
+    too_small(r, *m.get("normal_step"), "render.normal_step", s.normal_step, 1e-6);
   s.refine = m.word("refine", "none", {"none", "bisection"}) == "bisection" ? ir::MarchSettings::Refine::Bisection
                                                                              : ir::MarchSettings::Refine::None;
   s.samples = m.integer("samples", s.samples, 1, 1024);
@@ -242,7 +251,7 @@ void check_dual_normals(ValueReader& r, const MapReader& top, const ir::Graph& g
     if (n.animated()) {
       r.sink().error(at->loc,
                      fmt::format("render.normals: dual does not differentiate animated values ('{}', line {})",
-                                 ir::info(n.kind).name, n.loc.line),
+                                 scene_name(n), n.loc.line),
                      "use 'normals: tetrahedral' or 'normals: central' for an animated scene");
       return;
     }
@@ -250,7 +259,7 @@ void check_dual_normals(ValueReader& r, const MapReader& top, const ir::Graph& g
     r.sink().error(at->loc,
                    fmt::format("render.normals: dual needs dual-number derivatives, which '{}' (line {}) does not have; "
                                "they exist for {}",
-                               ir::info(n.kind).name, n.loc.line, ir::dual_normal_kinds()),
+                               scene_name(n), n.loc.line, ir::dual_normal_kinds()),
                    "use 'normals: tetrahedral' or 'normals: central' for this scene");
     return;
   }

@@ -51,7 +51,11 @@ Param ValueReader::param(const SourceValue& v, std::string_view what, Range r) {
   if (!e) return fallback(r);
   if (!expr::uses(e, "time")) {
     double x = expr::evaluate(e, {});
-    if (!std::isfinite(x) || std::fabs(x) > kMaxMagnitude || !in_range(x, r)) {
+    if (!std::isfinite(x) || std::fabs(x) > kMaxMagnitude) {
+      sink_.error(v.loc, fmt::format("{}: \"{}\" is {}, too large (the limit is {:g})", what, v.scalar, x, kMaxMagnitude), "");
+      return fallback(r);
+    }
+    if (!in_range(x, r)) {
       sink_.error(v.loc, fmt::format("{}: \"{}\" is {}; expected {}", what, v.scalar, x, range_text(r)), "");
       return fallback(r);
     }
@@ -123,6 +127,11 @@ double ValueReader::number(const SourceValue& v, std::string_view what, Range r)
   double x = std::strtod(s.c_str(), &end);
   if (s.empty() || end != s.c_str() + s.size()) {
     sink_.error(v.loc, fmt::format("{}: expected a number, got '{}'", what, s), "");
+    return 1;
+  }
+  if (errno == ERANGE && std::fabs(x) < 1) {  // underflow: 1e-320
+    sink_.error(v.loc, fmt::format("{}: {} is too close to zero for a number sdfc can use", what, s),
+                "write 0, or a number of at least 1e-300");
     return 1;
   }
   if (errno == ERANGE || !std::isfinite(x) || std::fabs(x) > kMaxMagnitude) {

@@ -1,5 +1,7 @@
 #include "sdfc/source/overrides.hpp"
 
+#include <fmt/format.h>
+
 #include "sdfc/source/yaml_loader.hpp"
 
 namespace sdfc {
@@ -36,6 +38,7 @@ void apply_override(SourceValue& root, const std::string& assignment) {
 
   SourceValue* cur = &root;
   std::string walked;
+  size_t column = 1;  // of the current step inside the assignment
   for (const auto& part : split_path(path)) {
     if (part.empty())
       fail(SourceLoc(where, 1, 1), "empty step in path '" + path + "'", "");
@@ -43,9 +46,10 @@ void apply_override(SourceValue& root, const std::string& assignment) {
       if (!is_index(part))
         fail(cur->loc, "'" + walked + "' is a list: expected an index, got '" + part + "'", "");
       size_t i = std::stoul(part);
-      if (i >= cur->items.size())
-        fail(cur->loc, "'" + walked + "' has " + std::to_string(cur->items.size()) +
-                                                  " items; index " + part + " is past the end", "");
+      if (i >= cur->items.size())  // the mistake is in the override, not in the list
+        fail(SourceLoc(where, 1, int(column)), "'" + walked + "' has " + std::to_string(cur->items.size()) +
+                                                    " items; index " + part + " is past the end",
+             fmt::format("the list is at {}", cur->loc.str()));
       cur = &cur->items[i];
     } else {
       if (cur->is_null()) cur->kind = SourceValue::Kind::Map;  // create missing blocks on the way
@@ -65,6 +69,7 @@ void apply_override(SourceValue& root, const std::string& assignment) {
       cur = next;
     }
     walked += (walked.empty() ? "" : ".") + part;
+    column += part.size() + 1;
   }
   *cur = std::move(value);
 }

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 namespace sdfc {
 
@@ -21,8 +22,14 @@ constexpr const char* kFlattenHint = "flatten it: a union takes any number of ch
 // kernel size limit (4096 node evaluations) holds far fewer.
 constexpr size_t kMaxValues = 200'000;
 
+// Caps on what is read at all: a scene file (the largest example is 4 KB,
+// 10 000 spheres take 600 KB) and one value (a name, an expression).
+constexpr std::uintmax_t kMaxFileBytes = 8u << 20;
+constexpr size_t kMaxScalarBytes = 64u << 10;
+
 struct Budget {
   size_t values = 0;
+  bool anchors = false;  // the text defines anchors (&name), so aliases may be what grew it
 };
 
 SourceLoc loc_of(const YAML::Mark& m, const std::shared_ptr<const std::string>& file) {
@@ -35,13 +42,22 @@ SourceValue convert(const YAML::Node& n, const std::shared_ptr<const std::string
   if (depth > kMaxDepth)
     fail(v.loc, fmt::format("the scene nests deeper than {} levels", kMaxDepth), kFlattenHint);
   if (++budget.values > kMaxValues)
-    fail(v.loc, fmt::format("the scene has more than {} values once its aliases (*name) are expanded", kMaxValues),
-         "use fewer or less deeply nested aliases");
+    fail(v.loc,
+         budget.anchors ? fmt::format("the scene has more than {} values once its aliases (*name) are expanded", kMaxValues)
+                        : fmt::format("the scene has more than {} values", kMaxValues),
+         budget.anchors ? "use fewer or less deeply nested aliases" : "no scene needs that many; use fewer values");
+  // yaml-cpp reports "?" for a plain scalar and "!" for a quoted one; any
+  // other tag (!foo, !!binary) means something this format does not have.
+  if (const std::string& tag = n.Tag(); !tag.empty() && tag != "?" && tag != "!" &&
+                                         tag.rfind("tag:yaml.org,2002:", 0) != 0)
+    fail(v.loc, fmt::format("unknown tag '{}'", tag.substr(0, 80)), "scene values take no tags; remove it");
   switch (n.Type()) {
     case YAML::NodeType::Undefined:
     case YAML::NodeType::Null: v.kind = SourceValue::Kind::Null; break;
     case YAML::NodeType::Scalar:
       v.kind = SourceValue::Kind::Scalar;
+      if (n.Scalar().size() > kMaxScalarBytes)
+        fail(v.loc, fmt::format("a value of {} bytes; at most {} are allowed", n.Scalar().size(), kMaxScalarBytes));
       v.scalar = n.Scalar();
       v.quoted = n.Tag() == "!";
       break;
@@ -101,6 +117,22 @@ bool deepest_flow_bracket(const std::string& text, int limit, int& line, int& co
 }  // namespace
 
 
+// The line of a "---" marker that starts a second document, or 0.
+static int second_document_line(const std::string& text) {
+  bool content = false;
+  int line = 1;
+  for (size_t i = 0; i < text.size(); ++line) {
+    size_t end = std::min(text.find('\n', i), text.size());
+    std::string_view l(text.data() + i, end - i);
+    const bool marker = l.substr(0, 3) == "---" && (l.size() == 3 || l[3] == ' ' || l[3] == '\t' || l[3] == '\r');
+    if (marker && content) return line;
+    const size_t first = l.find_first_not_of(" \t\r");
+    if (!marker && first != std::string_view::npos && l[first] != '#') content = true;
+    i = end + 1;
+  }
+  return 0;
+}
+
 SourceValue load_yaml_text(const std::string& text, const std::string& name) {
   auto file = std::make_shared<const std::string>(name);
   // yaml-cpp accepts some binary input silently; reject it with a clear message.
@@ -124,6 +156,13 @@ SourceValue load_yaml_text(const std::string& text, const std::string& name) {
   }
   YAML::Node root;
   try {
+    // yaml-cpp's LoadAll loops for minutes on some junk (", x"), so the
+    // second document is found by its marker: a line starting "---" after
+    // any content (YAML forbids it inside a scalar).
+    if (int line = second_document_line(text)) {
+      fail(SourceLoc(file, line, 1), "a second YAML document (after '---'); a scene file holds one",
+           "remove the '---' line or split the file");
+    }
     root = YAML::Load(text);
   } catch (const YAML::DeepRecursion& e) {
     // yaml-cpp's own guard (deeper than ours, so the same message fits).
@@ -136,6 +175,7 @@ SourceValue load_yaml_text(const std::string& text, const std::string& name) {
   if (!root.IsDefined() || root.IsNull())
     fail(SourceLoc(file, 1, 1), "the scene file is empty", "a scene needs at least a 'scene:' key");
   Budget budget;
+  budget.anchors = text.find('&') != std::string::npos;
   return convert(root, file, 0, budget);
 }
 
@@ -146,12 +186,21 @@ SourceValue load_yaml_file(const std::string& path) {
     fail(SourceLoc(file, 0, 0), "no such file", "");
   if (std::filesystem::is_directory(path, ec))
     fail(SourceLoc(file, 0, 0), "this is a directory, not a scene file", "");
+  // A device (/dev/zero), a FIFO or a socket could be endless: read files only.
+  if (!std::filesystem::is_regular_file(path, ec))
+    fail(SourceLoc(file, 0, 0), "this is not a regular file (a device, pipe or socket)", "a scene is a YAML text file");
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if (!ec && size > kMaxFileBytes)
+    fail(SourceLoc(file, 0, 0), fmt::format("the file is {} bytes; scene files are limited to {}", size, kMaxFileBytes),
+         "a scene this large is not a scene (10 000 shapes take 600 KB)");
   std::ifstream in(path, std::ios::binary);
   if (!in) fail(SourceLoc(file, 0, 0), "cannot read the file (permission denied?)", "");
-  std::stringstream ss;
-  ss << in.rdbuf();
+  std::string text(std::min<std::uintmax_t>(size, kMaxFileBytes) + 1, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
   if (in.bad()) fail(SourceLoc(file, 0, 0), "error while reading the file", "");
-  return load_yaml_text(ss.str(), path);
+  text.resize(static_cast<size_t>(in.gcount()));
+  if (text.size() > kMaxFileBytes) fail(SourceLoc(file, 0, 0), "the file grew past the size limit while it was read");
+  return load_yaml_text(text, path);
 }
 
 }  // namespace sdfc

@@ -1,5 +1,7 @@
 #include "sdfc/support/diagnostics.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 
 namespace sdfc {
@@ -10,10 +12,32 @@ std::string SourceLoc::str() const {
   return s;
 }
 
+std::string printable(std::string_view text, size_t max_bytes) {
+  static const char kHex[] = "0123456789abcdef";
+  std::string out;
+  size_t n = std::min(text.size(), max_bytes);
+  for (size_t i = 0; i < n; ++i) {
+    auto c = static_cast<unsigned char>(text[i]);
+    // C0 controls, DEL and the UTF-8 spelling of the C1 controls (U+0080..U+009F).
+    bool c1 = c == 0xc2 && i + 1 < text.size() && static_cast<unsigned char>(text[i + 1]) >= 0x80 &&
+              static_cast<unsigned char>(text[i + 1]) <= 0x9f;
+    if ((c < 0x20 && c != '\n' && c != '\t') || c == 0x7f || c1) {
+      unsigned char q = c1 ? static_cast<unsigned char>(text[++i]) : c;
+      out += "\\x";
+      out += kHex[q >> 4];
+      out += kHex[q & 15];
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  if (n < text.size()) out += fmt::format("... ({} bytes more)", text.size() - n);
+  return out;
+}
+
 std::string Diagnostic::str() const {
   std::string s = loc.str() + ": error: " + message;
   if (!hint.empty()) s += " (" + hint + ")";
-  return s;
+  return printable(s);
 }
 
 static std::string join(const std::vector<Diagnostic>& d) {

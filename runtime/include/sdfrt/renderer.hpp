@@ -37,7 +37,7 @@ struct RenderOptions {
   int tile_width = 256;   // clamped at the image edges
   int tile_height = 256;
   std::function<void(int done, int total)> progress;  // called with (0,total) first, then per tile
-  std::atomic<bool>* cancel = nullptr;               // checked before every tile
+  std::atomic<bool>* cancel = nullptr;               // checked before every launch (slices of ~100 ms)
   FloatImage* partial = nullptr;  // on cancel, receives the tiles done so far (the rest is zero)
   // Launch edge tiles with the full tile size too (tile_w/tile_h/out_stride
   // then describe the full tile; pixels past the image are computed and

@@ -7,11 +7,14 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
 #include <sys/stat.h>
 #include <unistd.h>
+
+#include "image_io/output_target.hpp"
 
 namespace sdfrt {
 namespace {
@@ -24,10 +27,41 @@ mode_t current_umask() {
   return mask;
 }
 
+std::string directory_of(const std::string& path) {
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  return parent.empty() ? std::string(".") : parent.string();
+}
+
+[[noreturn]] void throw_io(const std::string& path, const char* action, int error) {
+  throw IoError(fmt::format("cannot write '{}': {} failed: {}", path, action, std::strerror(error)), path, error);
+}
+
 }  // namespace
 
+void AtomicFile::protect_input(const std::string& path) { detail::protect_input_file(path); }
+
 AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
-  std::string pattern = path_ + ".tmp-XXXXXX";
+  detail::OutputTarget t = detail::resolve_output(path_);
+  target_ = t.path;
+  in_place_ = t.in_place;
+  if (in_place_) {
+    fd_ = ::open(target_.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
+    if (fd_ < 0) throw_io(path_, "opening", errno);
+  } else {
+    open_temp();
+  }
+  buffer_.reserve(kBufferSize);
+}
+
+void AtomicFile::open_temp() {
+  detail::remove_stale_temp_files(target_);
+  // The mode is 0666 less the umask, as a plain fopen() would create it.
+  fd_ = ::open(directory_of(target_).c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);
+  if (fd_ >= 0) {
+    anonymous_ = true;
+    return;
+  }
+  std::string pattern = detail::temp_pattern(target_);
   fd_ = ::mkstemp(pattern.data());
   if (fd_ < 0) {
     const int error = errno;
@@ -39,7 +73,26 @@ AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
   // mkstemp makes 0600 files; give the result the permissions a plain
   // fopen() would have.
   if (::fchmod(fd_, 0666 & ~current_umask()) != 0) fail("setting permissions", errno);
-  buffer_.reserve(kBufferSize);
+}
+
+// Gives the unnamed file a temp name beside the target (linkat cannot
+// replace an existing file, rename can).
+void AtomicFile::link_temp() {
+  const std::string proc = fmt::format("/proc/self/fd/{}", fd_);
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    std::string name = detail::temp_pattern(target_);
+    static const char kChars[] = "abcdefghijklmnopqrstuvwxyz0123456789";
+    for (size_t i = name.size() - 6; i < name.size(); ++i) name[i] = kChars[std::rand() % 36];
+    int rc = ::linkat(AT_FDCWD, proc.c_str(), AT_FDCWD, name.c_str(), AT_SYMLINK_FOLLOW);
+    if (rc != 0 && errno == ENOENT) rc = ::linkat(fd_, "", AT_FDCWD, name.c_str(), AT_EMPTY_PATH);
+    if (rc == 0) {
+      temp_path_ = name;
+      anonymous_ = false;
+      return;
+    }
+    if (errno != EEXIST) fail("linking the temporary file", errno);
+  }
+  fail("linking the temporary file", EEXIST);
 }
 
 AtomicFile::~AtomicFile() {
@@ -50,11 +103,9 @@ AtomicFile::~AtomicFile() {
 void AtomicFile::fail(const char* action, int error) {
   if (fd_ >= 0) ::close(fd_);
   fd_ = -1;
-  ::unlink(temp_path_.c_str());
+  if (!temp_path_.empty()) ::unlink(temp_path_.c_str());
   temp_path_.clear();
-  throw IoError(fmt::format("cannot write '{}': {} failed: {}", path_, action,
-                            std::strerror(error)),
-                path_, error);
+  throw_io(path_, action, error);
 }
 
 void AtomicFile::flush_buffer() {
@@ -108,22 +159,31 @@ void AtomicFile::write_at(std::size_t offset, const void* data, std::size_t size
 
 void AtomicFile::commit_as(std::string path) {
   path_ = std::move(path);
+  if (!in_place_) target_ = detail::resolve_output(path_).path;
   commit();
 }
 
 void AtomicFile::commit() {
   if (fd_ < 0) throw IoError(fmt::format("cannot write '{}': file already closed", path_), path_, 0);
   flush_buffer();
+  if (in_place_) {
+    // A device or pipe: nothing to rename; fsync means nothing to most.
+    if (::fsync(fd_) != 0 && errno != EINVAL && errno != EROFS && errno != ENOTSUP) fail("fsync", errno);
+    const int fd = fd_;
+    fd_ = -1;
+    if (::close(fd) != 0) fail("close", errno);
+    committed_ = true;
+    return;
+  }
   if (::fsync(fd_) != 0) fail("fsync", errno);
+  if (anonymous_) link_temp();
   const int fd = fd_;
   fd_ = -1;  // closed below whatever happens; fail() must not close it again
   if (::close(fd) != 0) fail("close", errno);
-  if (::rename(temp_path_.c_str(), path_.c_str()) != 0) fail("rename", errno);
+  if (::rename(temp_path_.c_str(), target_.c_str()) != 0) fail("rename", errno);
   committed_ = true;
   // Make the rename itself durable; best effort, the data is already safe.
-  const std::filesystem::path parent = std::filesystem::path(path_).parent_path();
-  const std::string dir = parent.empty() ? std::string(".") : parent.string();
-  if (const int dfd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY); dfd >= 0) {
+  if (const int dfd = ::open(directory_of(target_).c_str(), O_RDONLY | O_DIRECTORY); dfd >= 0) {
     ::fsync(dfd);
     ::close(dfd);
   }

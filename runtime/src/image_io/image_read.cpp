@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <string>
+#include <sys/stat.h>
 
 // Private copy of the decoder: the symbols stay inside this file.
 #define STB_IMAGE_STATIC
@@ -52,7 +54,18 @@ FloatImage read_pfm(const std::string& path, const std::string& name) {
     fail(path, "not a Portable Float Map");
   std::fgetc(f.get());  // the single whitespace after the scale
   int channels = kind[1] == 'F' ? 3 : 1;
+  // The sign of the scale is the byte order; 0 or NaN says neither.
+  if (!(scale < 0 || scale > 0)) fail(path, "the PFM scale must be a non-zero number (its sign is the byte order)");
   bool little = scale < 0;
+  // The header's size must match the data, before anything is allocated
+  // (a 12 KB file may claim 65536 x 65536 pixels).
+  const long data_at = std::ftell(f.get());
+  struct stat st {};
+  if (data_at < 0 || ::fstat(::fileno(f.get()), &st) != 0 || !S_ISREG(st.st_mode))
+    fail(path, "not a regular file");
+  const double need = double(w) * double(h) * channels * sizeof(float);
+  if (double(st.st_size - data_at) < need)
+    fail(path, "file is truncated (the header says " + std::to_string(w) + "x" + std::to_string(h) + ")");
   std::vector<float> raw(size_t(w) * h * channels);
   if (std::fread(raw.data(), sizeof(float), raw.size(), f.get()) != raw.size()) fail(path, "file is truncated");
   if (!little)

@@ -137,55 +137,74 @@ FloatImage Renderer::render(const std::vector<float>& frame, int width, int heig
   if (options.progress) options.progress(0, total);
   std::vector<float> host(max_floats);
 
-  for (int t = 0; t < total; ++t) {
-    if (options.cancel && options.cancel->load()) {
-      if (options.partial) *options.partial = std::move(image);
-      throw Cancelled();
-    }
-    const Tile& tile = plan.tiles[static_cast<std::size_t>(t)];
-    // What the kernel is told and launched with: the tile itself, or the
+  // Renders the w x h pixels at (x0, y0) of the band in one launch into the image.
+  auto launch_slice = [&](int x0, int y0, int w, int h) {
+    // What the kernel is told and launched with: the slice itself, or the
     // full tile size when uniform (the excess lands in ignored rows/lanes).
-    const int launch_w = options.uniform_launch ? plan.max_width : tile.width;
-    const int launch_h = options.uniform_launch ? plan.max_height : tile.height;
+    const int launch_w = options.uniform_launch ? plan.max_width : w;
+    const int launch_h = options.uniform_launch ? plan.max_height : h;
     const int groups_x = ceil_div(launch_w, pw);
     const int groups_y = ceil_div(launch_h, ph);
     const int stride = groups_x * pw;
     const int rows = groups_y * ph;  // whole packets; the excess rows are dropped
-    kernel.set_arg(kTileX0, static_cast<cl_int>(tile.x0 + win.x0));
-    kernel.set_arg(kTileY0, static_cast<cl_int>(tile.y0 + options.row_begin + win.y0));
+    kernel.set_arg(kTileX0, static_cast<cl_int>(x0 + win.x0));
+    kernel.set_arg(kTileY0, static_cast<cl_int>(y0 + options.row_begin + win.y0));
     kernel.set_arg(kTileW, static_cast<cl_int>(stride));
     kernel.set_arg(kTileH, static_cast<cl_int>(rows));
     kernel.set_arg(kOutStride, static_cast<cl_int>(stride));
-
-    const std::size_t global[2] = {static_cast<std::size_t>(groups_x),
-                                   static_cast<std::size_t>(groups_y)};
+    const std::size_t global[2] = {static_cast<std::size_t>(groups_x), static_cast<std::size_t>(groups_y)};
     const auto local = launch_local_size(device_->info().type);
     cl_event raw_event = nullptr;
     check_cl(clEnqueueNDRangeKernel(device_->queue(), kernel.get(), 2, nullptr, global,
-                                    local ? local->data() : nullptr, 0,
-                                    nullptr, &raw_event),
-             fmt::format("clEnqueueNDRangeKernel({}, tile {}x{} at {},{})", kernel.name(),
-                         tile.width, tile.height, tile.x0, tile.y0));
+                                    local ? local->data() : nullptr, 0, nullptr, &raw_event),
+             fmt::format("clEnqueueNDRangeKernel({}, tile {}x{} at {},{})", kernel.name(), w, h, x0, y0));
     EventHandle event(raw_event);
-    const std::size_t tile_floats =
-        planes * static_cast<std::size_t>(stride) * static_cast<std::size_t>(rows);
+    const std::size_t tile_floats = planes * static_cast<std::size_t>(stride) * static_cast<std::size_t>(rows);
     // Blocking read on an in-order queue also waits for the kernel.
-    check_cl(clEnqueueReadBuffer(device_->queue(), out, CL_TRUE, 0, tile_floats * sizeof(float),
-                                 host.data(), 0, nullptr, nullptr),
+    check_cl(clEnqueueReadBuffer(device_->queue(), out, CL_TRUE, 0, tile_floats * sizeof(float), host.data(), 0,
+                                 nullptr, nullptr),
              "clEnqueueReadBuffer(output tile)");
     stats.kernel_ms += event_ms(event.get());
-
     // Drop the padding lanes while copying rows into the image.
     for (std::size_t k = 0; k < planes; ++k) {
       auto dst = image.plane(static_cast<int>(k));
-      for (int row = 0; row < tile.height; ++row) {
-        const float* src =
-            host.data() + (k * static_cast<std::size_t>(rows) + static_cast<std::size_t>(row)) *
-                              static_cast<std::size_t>(stride);
-        float* to = dst.data() + static_cast<std::size_t>(tile.y0 + row) * static_cast<std::size_t>(width) +
-                    static_cast<std::size_t>(tile.x0);
-        std::memcpy(to, src, static_cast<std::size_t>(tile.width) * sizeof(float));
+      for (int row = 0; row < h; ++row) {
+        const float* src = host.data() + (k * static_cast<std::size_t>(rows) + static_cast<std::size_t>(row)) *
+                                             static_cast<std::size_t>(stride);
+        float* to = dst.data() + static_cast<std::size_t>(y0 + row) * static_cast<std::size_t>(width) +
+                    static_cast<std::size_t>(x0);
+        std::memcpy(to, src, static_cast<std::size_t>(w) * sizeof(float));
       }
+    }
+  };
+
+  // A tile is launched in slices (one packet at first, doubling while a
+  // launch takes under 50 ms, halving past 200 ms), so the cancel flag is
+  // seen within a fraction of a second even where one tile takes minutes.
+  int slice_w = pw, slice_h = ph;
+  for (int t = 0; t < total; ++t) {
+    const Tile& tile = plan.tiles[static_cast<std::size_t>(t)];
+    for (int sy = 0; sy < tile.height;) {
+      const int band_h = options.uniform_launch ? tile.height : std::min(slice_h, tile.height - sy);
+      for (int sx = 0; sx < tile.width;) {
+        if (options.cancel && options.cancel->load()) {
+          if (options.partial) *options.partial = std::move(image);
+          throw Cancelled();
+        }
+        const int part_w = options.uniform_launch ? tile.width : std::min(slice_w, tile.width - sx);
+        const auto slice_start = std::chrono::steady_clock::now();
+        launch_slice(tile.x0 + sx, tile.y0 + sy, part_w, band_h);
+        sx += part_w;
+        const double ms = ms_between(slice_start, std::chrono::steady_clock::now());
+        if (ms < 50) {
+          if (slice_w < plan.max_width) slice_w *= 2;
+          else if (slice_h < plan.max_height) slice_h *= 2;
+        } else if (ms > 200) {
+          if (slice_h > ph) slice_h = std::max(ph, slice_h / 2 / ph * ph);
+          else if (slice_w > pw) slice_w = std::max(pw, slice_w / 2 / pw * pw);
+        }
+      }
+      sy += band_h;
     }
     if (options.progress) options.progress(t + 1, total);
   }

@@ -33,8 +33,8 @@ real scene_dist(TIME_PARAM vec3 p)
         vec3 p25 = v3_sub(p, v3(0.0f, 2.6f, -0.2f));  // translate x=0 y=2.6 z=-0.2  (domain.yaml:45)
         real d26 = sd_sphere(p25, 0.85f);  // sphere radius=0.85  (domain.yaml:43)
         real d27 = d26 + ((((real)(0.07f) * sin(((real)(12.0f) * p25.x))) * sin(((real)(12.0f) * p25.y))) * sin(((real)(12.0f) * p25.z)));  // displace (((0.07 * sin((12 * x))) * sin((12 * y))) * sin((12 * z)))  (domain.yaml:44)
-        real o30 = dm_box_outside(p25, v3(-1.022f, -1.022f, -1.022f), v3(1.022f, 1.022f, 1.022f));  // L = 2.455 > 1 inside this box
-        real b29 = dm_box_outside(p25, v3(-0.92f, -0.92f, -0.92f), v3(0.92f, 0.92f, 0.92f));  // the node's bounds
+        real o30 = dm_box_outside(p25, v3(-1.02354f, -1.02354f, -1.02354f), v3(1.02354f, 1.02354f, 1.02354f));  // L = 2.455 > 1 inside this box
+        real b29 = dm_box_outside(p25, v3(-0.9214f, -0.9214f, -0.9214f), v3(0.9214f, 0.9214f, 0.9214f));  // the node's bounds
         real d28 = SEL(d27 * 0.40734482f, b29, o30 > 0.0f);  // divide by L inside, bounds distance outside
         vec3 p31 = v3_sub(p, v3(-2.6f, 2.6f, -0.2f));  // translate x=-2.6 y=2.6 z=-0.2  (domain.yaml:41)
         real d32 = sd_sphere(p31, 0.9f);  // sphere radius=0.9  (domain.yaml:39)
@@ -116,8 +116,8 @@ real scene_dist_mat(TIME_PARAM vec3 p, real* mat)
         vec3 p28 = v3_sub(p, v3(0.0f, 2.6f, -0.2f));  // translate x=0 y=2.6 z=-0.2  (domain.yaml:45)
         real d29 = sd_sphere(p28, 0.85f);  // sphere radius=0.85  (domain.yaml:43)
         real d30 = d29 + ((((real)(0.07f) * sin(((real)(12.0f) * p28.x))) * sin(((real)(12.0f) * p28.y))) * sin(((real)(12.0f) * p28.z)));  // displace (((0.07 * sin((12 * x))) * sin((12 * y))) * sin((12 * z)))  (domain.yaml:44)
-        real o33 = dm_box_outside(p28, v3(-1.022f, -1.022f, -1.022f), v3(1.022f, 1.022f, 1.022f));  // L = 2.455 > 1 inside this box
-        real b32 = dm_box_outside(p28, v3(-0.92f, -0.92f, -0.92f), v3(0.92f, 0.92f, 0.92f));  // the node's bounds
+        real o33 = dm_box_outside(p28, v3(-1.02354f, -1.02354f, -1.02354f), v3(1.02354f, 1.02354f, 1.02354f));  // L = 2.455 > 1 inside this box
+        real b32 = dm_box_outside(p28, v3(-0.9214f, -0.9214f, -0.9214f), v3(0.9214f, 0.9214f, 0.9214f));  // the node's bounds
         real d31 = SEL(d30 * 0.40734482f, b32, o33 > 0.0f);  // divide by L inside, bounds distance outside
         vec3 p34 = v3_sub(p, v3(-2.6f, 2.6f, -0.2f));  // translate x=-2.6 y=2.6 z=-0.2  (domain.yaml:41)
         real d35 = sd_sphere(p34, 0.9f);  // sphere radius=0.9  (domain.yaml:39)

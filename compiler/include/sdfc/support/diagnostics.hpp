@@ -41,6 +41,12 @@ class SceneError : public std::runtime_error {
   std::vector<Diagnostic> diags_;
 };
 
+// `text` safe to print on a terminal: control characters (ESC, CR, BEL, the
+// C1 controls...) shown as \x1b, at most `max_bytes` of it. Every message
+// that can hold text from a scene, a file name or the environment goes
+// through it.
+std::string printable(std::string_view text, size_t max_bytes = 2000);
+
 // Throws a SceneError with one diagnostic.
 [[noreturn]] void fail(const SourceLoc& loc, std::string message, std::string hint = {});
 
