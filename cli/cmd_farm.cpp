@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 
 #include <sdfrt/errors.hpp>
-#include <sdfrt/text_file.hpp>
+#include <sdfrt/output_file.hpp>
 
 #include <cstdlib>
 #include <filesystem>
@@ -125,9 +125,13 @@ int run_farm_slurm(const FarmSlurmArgs& a) {
     if (ec) throw sdfrt::IoError(fmt::format("cannot create '{}': {}", dir.string(), ec.message()), dir.string(), ec.value());
   }
   const std::string array_file = base + ".sbatch", merge_file = base + ".merge.sbatch", submit_file = base + ".submit.sh";
-  std::cout << sdfrt::write_text_file(array_file, array_script(job)).path << "\n";
-  if (job.parts > 0) std::cout << sdfrt::write_text_file(merge_file, merge_script(job)).path << "\n";
-  std::cout << sdfrt::write_text_file(submit_file, submit_script(job, array_file, merge_file)).path << "\n";
+  auto write = [](const std::string& path, const std::string& text) {
+    sdfrt::write_output_file(path, text);
+    std::cout << path << "\n";
+  };
+  write(array_file, array_script(job));
+  if (job.parts > 0) write(merge_file, merge_script(job));
+  write(submit_file, submit_script(job, array_file, merge_file));
   if (!a.submit) {
     std::cerr << fmt::format("queue it with: sh {}\n", shell_quote(submit_file));
     return kOk;

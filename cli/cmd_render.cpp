@@ -24,6 +24,7 @@
 #include "cli_support.hpp"
 #include "farm_render.hpp"
 #include "offline_render.hpp"
+#include "render_repeat.hpp"
 #include "commands.hpp"
 #include "output_format.hpp"
 #include "video_output.hpp"
@@ -104,20 +105,6 @@ std::string read_kernel_file(const std::string& path) {
   return ss.str();
 }
 
-// The whole image lives in host memory (the device only holds one tile), so
-// refuse sizes the machine cannot hold before allocating anything.
-void check_host_memory(int w, int h, size_t planes) {
-  const double bytes = double(w) * double(h) * double(planes) * sizeof(float);
-  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
-  if (pages <= 0 || page <= 0) return;
-  const double usable = 0.75 * double(pages) * double(page);
-  if (bytes > usable)
-    throw sdfrt::DeviceError(fmt::format("a {}x{} image with {} planes needs {:.1f} GiB of memory, more than this "
-                                         "machine can give ({:.1f} GiB); render a smaller image",
-                                         w, h, planes, bytes / 1073741824.0, usable / 1073741824.0));
-}
-
-
 int run_render(RenderArgs a) {
   // --width/--height are overrides like any other, so they are validated alike.
   if (a.width > 0) a.scene.sets.push_back(fmt::format("render.width={}", a.width));
@@ -170,33 +157,7 @@ int run_render(RenderArgs a) {
   const int w = m.plan.march.width, h = m.plan.march.height;
   std::signal(SIGINT, on_sigint);
   std::signal(SIGTERM, on_sigint);  // a farm's scheduler stops a task so: temp files go, no partial image
-  if (a.repeat > 0) {
-    check_host_memory(w, h, k.planes.size());  // --repeat holds whole images in memory
-    std::vector<float> frame = codegen::frame_params(m.plan, w, h, 0.0);
-    sdfrt::RenderOptions opt;
-    opt.tile_width = opt.tile_height = a.tile;
-    opt.cancel = &g_cancel;
-    // One warm-up frame, then N timed frames; the median is what to quote.
-    renderer.render(frame, w, h, opt);
-    std::vector<double> times;
-    sdfrt::FloatImage img;
-    for (int i = 0; i < a.repeat; ++i) {
-      sdfrt::RenderStats st;
-      img = renderer.render(frame, w, h, opt, &st);
-      times.push_back(st.total_ms);
-      std::cerr << fmt::format("frame {}: {:.1f} ms\n", i + 1, st.total_ms);
-    }
-    std::sort(times.begin(), times.end());
-    double median = times.size() % 2 ? times[times.size() / 2] : 0.5 * (times[times.size() / 2 - 1] + times[times.size() / 2]);
-    std::cerr << fmt::format("median {:.1f} ms over {} frames ({}x{})\n", median, a.repeat, w, h);
-    sdfrt::WriteReport rep = sdfrt::write_png(a.output, img);
-    if (rep.nonfinite_samples > 0)
-      std::cerr << fmt::format("warning: {} NaN/Inf samples were written as black\n", rep.nonfinite_samples);
-    std::cout << rep.path << "\n";
-    // The AOVs of the last timed frame, so one run gives both time and error.
-    for (const auto& p : write_aovs(spec, img, a.output, a.aovs)) std::cout << p << "\n";
-    return kOk;
-  }
+  if (a.repeat > 0) return render_repeated({&renderer, &m.plan, a.tile, a.repeat, a.output, a.aovs, &g_cancel});
 
   std::vector<int> frames = a.frames.empty() ? std::vector<int>{0} : parse_frames(a.frames);
   const bool sequence = !a.frames.empty();
