@@ -21,6 +21,7 @@
 #include "sdfc/ir/printer.hpp"
 #include "shading_emitter.hpp"
 #include "trap_range.hpp"
+#include "trap_shape_emitter.hpp"
 
 namespace sdfc::codegen {
 
@@ -118,7 +119,7 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
   if (blended) {
     w.line("real id;");
     w.line("mat_record look;  // the materials mixed across smooth blends");
-    w.line("id = scene_material(TIME_ARG pos, &look);");
+    w.line(m.analyses.coloring_geometry ? "id = scene_material(TIME_ARG pos, n, &look);" : "id = scene_material(TIME_ARG pos, &look);");
     if (refl_out) w.line("refl = SEL(refl, look.reflectivity, hit);");
   } else if (const auto& uni = m.analyses.uniform_material) {
     w.line(fmt::format("real id = {};  // the scene's one material: no distance evaluation needed", lit.typed(*uni)));
@@ -423,7 +424,7 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
 
 // The blended material at given points (tests): albedo r, g, b, specular,
 // shininess, reflectivity, each in its own plane of n floats.
-std::string probe_material_kernel(bool animated) {
+std::string probe_material_kernel(bool animated, bool normal) {
   return std::string(R"(// ---- probe: the blended material at given points (tests and tools) ----
 __kernel void sdfc_probe_material(__global const float* px, __global const float* py, __global const float* pz,
                                   __global float* out, const int n, const float probe_time)
@@ -431,8 +432,7 @@ __kernel void sdfc_probe_material(__global const float* px, __global const float
     const int i = get_global_id(0) * SDFC_WIDTH;
     vec3 p = v3(LOAD_REAL(px + i), LOAD_REAL(py + i), LOAD_REAL(pz + i));
 )") + (animated ? "    const scalar time = (scalar)probe_time;\n" : "    (void)probe_time;\n") + R"(    mat_record r;
-    (void)scene_material(TIME_ARG p, &r);
-    STORE_REAL(r.albedo.x, out + i);
+)" + (normal ? "    (void)scene_material(TIME_ARG p, normal_central(TIME_ARG p, K(1e-4f)), &r);\n" : "    (void)scene_material(TIME_ARG p, &r);\n") + R"(    STORE_REAL(r.albedo.x, out + i);
     STORE_REAL(r.albedo.y, out + n + i);
     STORE_REAL(r.albedo.z, out + 2 * n + i);
     STORE_REAL(r.specular, out + 3 * n + i);
@@ -482,8 +482,11 @@ EmittedKernel emit_opencl(const ir::Module& m, const EmitOptions& opt) {
   std::string kernel = segment_function(m, lit, used) + "\n" + radiance_function(m, used) + "\n" +
                        render_kernel(m, lit, used, opt);
   if (opt.probe_kernel) kernel += "\n" + probe_kernel(facts.uses_time);
-  if (opt.probe_kernel && facts.material_blend) kernel += "\n" + probe_material_kernel(facts.uses_time);
+  if (opt.probe_kernel && facts.material_blend) kernel += "\n" + probe_material_kernel(facts.uses_time, facts.coloring_geometry);
 
+  // a normal for the mesh colour and the material probe, which have none of their own
+  if (facts.coloring_geometry) used.insert("normal_central");
+  std::string trap_shapes = detail::emit_trap_shapes(m.plan, lit, used);  // orbit_trap.shape (trap_shape_emitter.cpp)
   auto fns = StdlibManifest::instance().closure({used.begin(), used.end()});
   EmittedKernel k;
   k.simd_width = wd;
@@ -505,7 +508,7 @@ EmittedKernel emit_opencl(const ir::Module& m, const EmitOptions& opt) {
   src += "// stdlib functions:";
   for (const auto& n : k.stdlib_functions) src += " " + n;
   src += "\n\n" + detail::prelude(wd, rows, m.plan.march.precision, facts.uses_time);
-  src += "\n// ---- stdlib ----" + before + "\n";
+  src += "\n// ---- stdlib ----" + before + trap_shapes + "\n";
   src += scene + "\n";
   if (!after.empty()) src += "// ---- stdlib that calls the scene ----" + after + "\n";
   src += shading + "\n" + kernel;

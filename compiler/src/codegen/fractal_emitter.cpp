@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "sdfc/ir/fractal_math.hpp"
+#include "trap_shape_emitter.hpp"
 
 namespace sdfc::codegen::detail {
 
@@ -179,7 +180,7 @@ namespace {
 // steps taken; the fraction past the escape radius follows the growth law of
 // the step that escaped (a power for a Mandelbulb step, linear for a box).
 std::string hybrid_trap(const ir::Node& n, const std::string& p, const Literals& lit, CodeWriter& w,
-                        std::set<std::string>& used, bool iteration) {
+                        std::set<std::string>& used, bool iteration, const std::string& measure) {
   const HybridOrbit h = hybrid_orbit(n, lit);
   const std::string& escape = h.escape;
   std::string out = fmt::format("htrap{}", w.fresh());
@@ -198,7 +199,7 @@ std::string hybrid_trap(const ir::Node& n, const std::string& p, const Literals&
   w.line("n = SEL(n, n + 1.0f, alive);");
   w.line("growth = SEL(growth, (real)(g), alive);");
   w.line("power_law = SEL(power_law, (real)(law), alive);");
-  w.line("trap = SEL(trap, fmin(trap, fmin(fabs(z.x), fmin(fabs(z.y), fabs(z.z)))), alive);");
+  w.line("trap = SEL(trap, fmin(trap, " + measure + "), alive);");
   w.line("r = v3_length(z);");
   w.line(fmt::format("alive = alive & (r < {});", escape));
   w.close("}");
@@ -217,14 +218,16 @@ std::string hybrid_trap(const ir::Node& n, const std::string& p, const Literals&
 }  // namespace
 
 std::string emit_fractal_trap(const ir::Node& n, const std::string& p, const Literals& lit, CodeWriter& w,
-                              std::set<std::string>& used, OrbitValue value) {
+                              std::set<std::string>& used, OrbitValue value, std::optional<size_t> shape) {
   const auto& q = n.params;
   auto r = [&](size_t i) { return param(n, i, lit); };
   if (value == OrbitValue::Escape) {  // folding fractals never escape, and a hybrid reports its budget
     if (n.kind == Kind::Menger || n.kind == Kind::Sierpinski || n.kind == Kind::Hybrid) return lit.typed(q[0]);
     if (n.kind == Kind::Kifs) return lit.typed(q[5]);
   }
-  if (n.kind == Kind::Hybrid) return hybrid_trap(n, p, lit, w, used, value == OrbitValue::Smooth);
+  if (n.kind == Kind::Hybrid)
+    return hybrid_trap(n, p, lit, w, used, value == OrbitValue::Smooth,
+                       shape ? trap_measure_call(*shape, "z", used) : "fmin(fabs(z.x), fmin(fabs(z.y), fabs(z.z)))");
   std::string fn, args;
   switch (n.kind) {
     case Kind::Mandelbulb:
@@ -250,7 +253,8 @@ std::string emit_fractal_trap(const ir::Node& n, const std::string& p, const Lit
     default: return "";
   }
   if (args.empty()) args = fmt::format("{}, {}", p, orbit_args(n, lit));
-  used.insert(fn);
+  if (shape) fn = shaped_trap_fn(fn, *shape, used);  // a copy with the material's trap shape
+  else used.insert(fn);
   // One orbit gives every value; the caller picks one. Only escape-time
   // orbits have an escape iteration (the others returned theirs above).
   const bool escapes = n.kind == Kind::Mandelbulb || n.kind == Kind::Juliabulb || n.kind == Kind::Mandelbox ||

@@ -1,6 +1,7 @@
 #pragma once
 // Fractal nodes to OpenCL C: the call into the stdlib estimator with the
 // node's parameters as literals, or (hybrid) an orbit loop written inline.
+#include <optional>
 #include <set>
 #include <string>
 
@@ -30,8 +31,9 @@ std::string bulb_estimator_radius(const ir::Node& n, const Literals& lit);
 enum class OrbitValue { Trap, Smooth, Escape };
 
 // The node's orbit value at `p`. Writes any statements it needs to `w`; ""
-// for kinds without an orbit.
+// for kinds without an orbit. `shape`: the material whose trap shape the
+// trap takes (trap_shape_emitter.hpp); none for the default shape.
 std::string emit_fractal_trap(const ir::Node& n, const std::string& p, const Literals& lit, CodeWriter& w,
-                              std::set<std::string>& used, OrbitValue value);
+                              std::set<std::string>& used, OrbitValue value, std::optional<size_t> shape = std::nullopt);
 
 }  // namespace sdfc::codegen::detail

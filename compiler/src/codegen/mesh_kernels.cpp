@@ -86,13 +86,17 @@ EmittedKernel emit_mesh_kernels(const ir::Module& m, int simd_width) {
   EmittedKernel k = emit_opencl(m, opt);
   std::string albedo;
   if (m.analyses.material_blend) {
-    albedo = "    mat_record r;\n    (void)scene_material(TIME_ARG p, &r);\n    albedo = r.albedo;\n";
+    albedo = m.analyses.coloring_geometry
+                 ? "    mat_record r;\n    (void)scene_material(TIME_ARG p, normal_central(TIME_ARG p, K(1e-4f)), &r);\n"
+                   "    albedo = r.albedo;\n"
+                 : "    mat_record r;\n    (void)scene_material(TIME_ARG p, &r);\n    albedo = r.albedo;\n";
   } else {
     // the same material_of call shade_surface makes, with the orbit trap when the scene has one
-    const bool trap = k.source.find("real* shininess, real trap)") != std::string::npos;
+    const bool trap = m.analyses.orbit_traps;
     albedo = "    real id, specular, shininess;\n    (void)scene_dist_mat(TIME_ARG p, &id);\n";
     if (trap) albedo += "    real trap = scene_trap(TIME_ARG p);\n";
-    albedo += std::string("    material_of(id, &albedo, &specular, &shininess") + (trap ? ", trap" : "") + ");\n";
+    albedo += std::string("    material_of(id, &albedo, &specular, &shininess") + (trap ? ", trap" : "") +
+              (m.analyses.coloring_geometry ? ", p, normal_central(TIME_ARG p, K(1e-4f))" : "") + ");\n";
   }
   std::string entries = std::string(kClippedDistance) + colour_kernel(albedo);
   replace_all(entries, "TIME_FROM_GRID",

@@ -7,10 +7,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <optional>
 
 #include "catalogue_emitter.hpp"
 #include "fractal_emitter.hpp"
 #include "kernel_text.hpp"
+#include "trap_shape_emitter.hpp"
 #include "sdfc/expr/expr.hpp"
 #include "sdfc/ir/analyses.hpp"
 
@@ -52,6 +55,7 @@ class SceneEmitter {
         iterations_(iterations),
         used_(used),
         orbit_traps_(m.analyses.orbit_traps),
+        coloring_geometry_(m.analyses.coloring_geometry),
         file_(m.source_name) {
     if (trap || blend) find_iteration_fractals(m, m.root, 0);
   }
@@ -59,7 +63,8 @@ class SceneEmitter {
   std::string function(NodeId root) {
     if (blend_) {
       call("mat_record");
-      w_.line("real scene_material(TIME_PARAM vec3 p, mat_record* out)");
+      w_.line(coloring_geometry_ ? "real scene_material(TIME_PARAM vec3 p, vec3 n, mat_record* out)"
+                                 : "real scene_material(TIME_PARAM vec3 p, mat_record* out)");
       w_.open("{");
       Value v = emit(root, "p");
       w_.line("(void)" + v.d + ";");
@@ -131,13 +136,17 @@ class SceneEmitter {
     std::string trap;
     if (traps) {
       trap = lit_.typed(0);
-      if (!md.trap_palette.empty() && is_fractal(n)) {
+      if (md.orbit_coloured() && is_fractal(n)) {
         const bool iteration = md.trap_source == ir::MaterialDef::TrapSource::Iteration;
-        std::string t = emit_fractal_trap(n, leaf_p_, lit_, w_, used_, iteration ? OrbitValue::Smooth : OrbitValue::Trap);
+        std::optional<size_t> shape;
+        if (!iteration && shaped_trap(plan_, size_t(cur_mat_))) shape = size_t(cur_mat_);
+        std::string t =
+            emit_fractal_trap(n, leaf_p_, lit_, w_, used_, iteration ? OrbitValue::Smooth : OrbitValue::Trap, shape);
         if (!t.empty()) trap = t;
       }
       trap = ", " + trap;
     }
+    if (coloring_geometry_) trap += ", p, n";  // the world point and the normal scene_material takes
     w_.line(fmt::format("material_of({}, &{}.albedo, &{}.specular, &{}.shininess{});", lit_.typed(cur_mat_), rec, rec, rec,
                         trap));
     w_.line(fmt::format("{}.reflectivity = {};", rec, lit_.typed(md.reflectivity)));
@@ -322,7 +331,9 @@ class SceneEmitter {
           const OrbitValue value = iterations_           ? OrbitValue::Escape
                                    : iteration_.count(id) ? OrbitValue::Smooth
                                                           : OrbitValue::Trap;
-          std::string trap = trap_ ? emit_fractal_trap(n, p, lit_, w_, used_, value) : "";
+          std::optional<size_t> shape;
+          if (auto it = shaped_.find(id); it != shaped_.end() && value == OrbitValue::Trap) shape = it->second;
+          std::string trap = trap_ ? emit_fractal_trap(n, p, lit_, w_, used_, value, shape) : "";
           if (!trap.empty()) {
             v.mat = var(iterations_ ? "it" : "trap");
             w_.line(fmt::format("real {} = {};  // {}", v.mat, trap,
@@ -479,13 +490,15 @@ class SceneEmitter {
   }
 
   // The fractals whose material (the nearest material above them, as for
-  // scene_dist_mat) colours by the smooth iteration count instead of the trap.
+  // scene_dist_mat) colours by the smooth iteration count instead of the
+  // trap, and those whose material's trap has a shape.
   void find_iteration_fractals(const ir::Module& m, NodeId id, int material) {
     const ir::Node& n = g_.node(id);
     if (n.kind == Kind::Material) material = int(n.params[0]);
     if (is_fractal(n) && material > 0 && size_t(material) < m.plan.materials.size() &&
         m.plan.materials[size_t(material)].trap_source == ir::MaterialDef::TrapSource::Iteration)
       iteration_.insert(id);
+    if (is_fractal(n) && material > 0 && shaped_trap(m.plan, size_t(material))) shaped_[id] = size_t(material);
     for (NodeId c : n.children) find_iteration_fractals(m, c, material);
   }
 
@@ -498,9 +511,11 @@ class SceneEmitter {
   double cur_mat_ = 0;  // scene_material: the material of the nearest material node above
   std::string leaf_p_;
   std::set<NodeId> iteration_;
+  std::map<NodeId, size_t> shaped_;  // fractals whose material's trap has a shape, and that material
   bool iterations_;
   std::set<std::string>& used_;
   bool orbit_traps_;
+  bool coloring_geometry_;
   std::string file_;
   CodeWriter w_;
 };

@@ -55,8 +55,10 @@ std::string emit_shading(const ir::RenderPlan& plan, const ir::Analyses& facts, 
   const auto& mats = plan.materials;
   const bool traps = facts.orbit_traps;  // any orbit-trap material: the trap value comes along
   std::string trap_param = traps ? ", real trap" : "";
+  // a coloring source reads the hit's position and normal (world space)
+  const std::string geometry_param = facts.coloring_geometry ? ", vec3 p, vec3 n" : "";
   w.line("// ---- materials: id -> albedo, specular, shininess ----");
-  w.line("void material_of(real id, vec3* albedo, real* specular, real* shininess" + trap_param + ")");
+  w.line("void material_of(real id, vec3* albedo, real* specular, real* shininess" + trap_param + geometry_param + ")");
   w.open("{");
   w.line(fmt::format("*albedo = {};  // material 0 '{}'", lit.vec3(mats[0].color), kernel_text(mats[0].name)));
   w.line(fmt::format("*specular = {};", lit.typed(mats[0].specular)));
@@ -70,6 +72,7 @@ std::string emit_shading(const ir::RenderPlan& plan, const ir::Analyses& facts, 
     w.line(fmt::format("*specular = SEL(*specular, {}, is{});", lit.typed(md.specular), i));
     w.line(fmt::format("*shininess = SEL(*shininess, {}, is{});", lit.typed(md.shininess), i));
     if (!md.trap_palette.empty()) emit_trap_palette(w, lit, md, i);  // palette_emitter.cpp
+    if (!md.coloring.empty()) emit_coloring(w, lit, md, i);
   }
   w.close("}");
   w.blank();
@@ -99,7 +102,8 @@ std::string emit_shading(const ir::RenderPlan& plan, const ir::Analyses& facts, 
   if (!blended) {
     w.line("vec3 albedo;");
     w.line("real specular, shininess;");
-    w.line(std::string("material_of(mat, &albedo, &specular, &shininess") + (traps ? ", trap" : "") + ");");
+    w.line(std::string("material_of(mat, &albedo, &specular, &shininess") + (traps ? ", trap" : "") +
+           (facts.coloring_geometry ? ", p, n" : "") + ");");
   }
   ir::Vec3d ambient{0, 0, 0};
   for (const auto& l : plan.lights)

@@ -218,12 +218,18 @@ void read_materials(ValueReader& r, const SourceValue& v, ir::RenderPlan& plan) 
       r.sink().error(key.loc, "'default' is the built-in material's name", "choose another name");
       continue;
     }
-    MapReader m(r, body, "material '" + md.name + "'", {"color", "specular", "shininess", "orbit_trap", "reflectivity"});
+    MapReader m(r, body, "material '" + md.name + "'", {"color", "specular", "shininess", "orbit_trap", "coloring", "reflectivity"});
     md.color = m.vec3("color", md.color, Range::closed(0, 1));
     md.specular = m.number("specular", md.specular, Range::closed(0, 100));
     md.shininess = m.number("shininess", md.shininess, Range::closed(1, 10000));
     md.reflectivity = m.number("reflectivity", md.reflectivity, Range::closed(0, 1));
     if (const SourceValue* t = m.get("orbit_trap")) frontend::read_orbit_trap(r, *t, md);
+    if (const SourceValue* c = m.get("coloring")) {
+      if (m.get("orbit_trap"))
+        r.sink().error(c->loc, "material '" + md.name + "': give either 'orbit_trap' (one source) or 'coloring' (several mixed), not both",
+                       "an orbit_trap is a coloring with one trap source");
+      else frontend::read_coloring(r, *c, md);
+    }
     plan.materials.push_back(md);
   }
 }

@@ -27,7 +27,7 @@ bool uses_time(const ir::Module& m) {
 }
 
 bool orbit_traps(const ir::RenderPlan& plan) {
-  return std::any_of(plan.materials.begin(), plan.materials.end(), [](const auto& md) { return !md.trap_palette.empty(); });
+  return std::any_of(plan.materials.begin(), plan.materials.end(), [](const auto& md) { return md.orbit_coloured(); });
 }
 
 // The materials a subtree shows, as keys: the material id, or for a
@@ -50,7 +50,7 @@ class BlendFinder {
     std::set<long> out;
     if (n.kind == Kind::Material) mat = n.params[0];
     if (n.children.empty()) {
-      bool trap = !plan_.materials.at(size_t(mat)).trap_palette.empty();
+      bool trap = plan_.materials.at(size_t(mat)).orbit_coloured();
       out.insert(trap ? -1 - long(id) : long(mat));
     }
     for (NodeId c : n.children) {
@@ -115,6 +115,8 @@ ir::Module analyse(ir::Module m) {
   a.uses_time = uses_time(m);
   a.material_blend = BlendFinder(m).found(m.root);
   a.orbit_traps = orbit_traps(m.plan);
+  a.coloring_geometry = std::any_of(m.plan.materials.begin(), m.plan.materials.end(),
+                                    [](const auto& md) { return md.geometry_coloured(); });
   a.uniform_material = uniform_material(m);
   a.ray_bounds = ray_bounds(m);
   m.analyses = std::move(a);

@@ -1,5 +1,6 @@
 // Reference (double, CPU) orbit colour of the fractal kinds: the orbit trap
-// (smallest |coordinate| along the orbit) and the smooth iteration count,
+// (the smallest measure of the orbit against the trap's shape: by default
+// its smallest |coordinate|) and the smooth iteration count,
 // written from the formulas independently of stdlib/fractal_traps.cl.
 #include <algorithm>
 #include <cmath>
@@ -14,7 +15,21 @@ namespace {
 
 double len(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
 double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-double min_abs(const Vec3& z) { return std::min({std::fabs(z[0]), std::fabs(z[1]), std::fabs(z[2])}); }
+
+// The trap's measure of one orbit point (the trap is its smallest value).
+double measure(const ir::TrapShape& t, const Vec3& z) {
+  using K = ir::TrapShape::Kind;
+  Vec3 q{z[0] - t.point[0], z[1] - t.point[1], z[2] - t.point[2]};
+  Vec3 d{t.direction[0], t.direction[1], t.direction[2]};
+  switch (t.kind) {
+    case K::Point: return len(q);
+    case K::Plane: return std::fabs(dot(q, d));
+    case K::Line: return std::sqrt(std::max(dot(q, q) - dot(q, d) * dot(q, d), 0.0));
+    case K::Sphere: return std::fabs(len(q) - t.radius);
+    case K::Cross: break;
+  }
+  return std::min({std::fabs(z[0]), std::fabs(z[1]), std::fabs(z[2])});
+}
 
 // n steps, |z| = r after them, escape radius R, growth g per step (a power
 // for power_law, else a factor); 1 when the orbit never escaped.
@@ -59,7 +74,8 @@ Vec3 rows(const std::vector<double>& q, size_t at, const Vec3& v) {
 
 }  // namespace
 
-std::optional<OrbitColour> orbit_colour(const ir::Node& n, const Vec3& p) {
+std::optional<OrbitColour> orbit_colour(const ir::Node& n, const Vec3& p, const ir::TrapShape& shape) {
+  auto min_abs = [&](const Vec3& z) { return measure(shape, z); };
   using ir::Kind;
   const auto& q = n.params;
   double trap = 1e10;
@@ -97,7 +113,7 @@ std::optional<OrbitColour> orbit_colour(const ir::Node& n, const Vec3& p) {
         double an = degree == 3 ? a * (a * a - 3 * vv) : a * a - vv, vs = degree == 3 ? 3 * a * a - vv : 2 * a;
         for (int i = 0; i < 3; ++i) v[i] = v[i] * vs + q[1 + i];
         a = an + q[0];
-        trap = std::min({trap, std::fabs(a), std::fabs(v[0]), std::fabs(v[1])});
+        trap = std::min(trap, min_abs(Vec3{a, v[0], v[1]}));
       }
       return OrbitColour{trap, smooth_iteration(k, r(), bailout, degree, true, iterations)};
     }

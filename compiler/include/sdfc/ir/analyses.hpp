@@ -22,6 +22,7 @@ struct Analyses {
   bool uses_time = false;       // animated geometry, lights or fog: the kernel reads the frame time
   bool material_blend = false;  // a smooth blend joins children that show different materials
   bool orbit_traps = false;     // some material colours by an orbit trap
+  bool coloring_geometry = false;  // some material's coloring reads the hit's normal or position
   // The material id of every hit when the whole scene carries one material.
   std::optional<double> uniform_material;
   // Where primary and shadow rays march; none for an unbounded scene.

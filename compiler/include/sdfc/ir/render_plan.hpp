@@ -127,6 +127,33 @@ struct Light {
   SourceLoc loc;
 };
 
+// What an orbit point is measured against for the orbit trap (the smallest
+// value along the orbit): the nearest coordinate plane (`cross`, the
+// default), a point, a plane, a line, or a sphere's shell.
+struct TrapShape {
+  enum class Kind { Cross, Point, Plane, Line, Sphere } kind = Kind::Cross;
+  Vec3d point{0, 0, 0};      // the point; a point on the plane or line; the sphere's centre
+  Vec3d direction{0, 0, 1};  // plane: its unit normal; line: its unit direction
+  double radius = 1;         // sphere
+};
+
+// Past a palette's ends: hold the end colours, start again, or walk back.
+enum class PaletteRepeat { Clamp, Repeat, Mirror };
+
+// One source of a material's `coloring:` (several are mixed by weight): a
+// value at the hit mapped onto its own palette, as an orbit trap's value is.
+struct ColourSource {
+  enum class Kind { Trap, Iteration, Normal, Position } kind = Kind::Trap;
+  TrapShape shape;        // trap
+  Vec3d axis{0, 0, 1};    // normal, position: the value is dot(n, axis) or dot(p, axis)
+  std::vector<Vec3d> palette;
+  std::vector<double> positions;  // of the palette's colours, ascending in [0, 1]
+  bool range_auto = true;         // filled in when the kernel is emitted (codegen/trap_range)
+  double lo = 0, hi = 1, offset = 0, cycles = 1;
+  PaletteRepeat repeat = PaletteRepeat::Clamp;
+  double weight = 1;
+};
+
 struct MaterialDef {
   std::string name;
   Vec3d color{0.8, 0.8, 0.8};
@@ -139,6 +166,8 @@ struct MaterialDef {
   // What walks the palette: the orbit trap, or the smooth iteration count
   // (`orbit_trap.source: iteration`).
   enum class TrapSource { Trap, Iteration } trap_source = TrapSource::Trap;
+  // The trap's shape (`orbit_trap.shape`); the default keeps today's kernel.
+  TrapShape trap_shape;
   // Where each palette colour sits along the palette, ascending in [0, 1]
   // (evenly spaced for `palette:`, as written for `gradient:`).
   std::vector<double> trap_positions;
@@ -150,7 +179,26 @@ struct MaterialDef {
   // palette position = (value - lo) / (hi - lo) * cycles + offset, then
   // clamped, wrapped (repeat) or reflected (mirror) into [0, 1].
   double trap_offset = 0, trap_cycles = 1;
-  enum class TrapRepeat { Clamp, Repeat, Mirror } trap_repeat = TrapRepeat::Clamp;
+  using TrapRepeat = PaletteRepeat;
+  TrapRepeat trap_repeat = TrapRepeat::Clamp;
+  // `coloring:` several sources, each through its palette, mixed by weight
+  // and then into `color` by coloring_mix. Empty: none. Its trap or
+  // iteration source (one at most) sets trap_source and trap_shape.
+  std::vector<ColourSource> coloring;
+  double coloring_mix = 1;
+  // The colour reads the fractal's orbit: an orbit_trap, or a coloring with
+  // a trap or iteration source.
+  bool orbit_coloured() const {
+    for (const auto& s : coloring)
+      if (s.kind == ColourSource::Kind::Trap || s.kind == ColourSource::Kind::Iteration) return true;
+    return !trap_palette.empty();
+  }
+  // A coloring source reads the hit's normal or position.
+  bool geometry_coloured() const {
+    for (const auto& s : coloring)
+      if (s.kind == ColourSource::Kind::Normal || s.kind == ColourSource::Kind::Position) return true;
+    return false;
+  }
   double reflectivity = 0;  // reflectance at normal incidence (Fresnel-Schlick R0)
   SourceLoc loc;
 };

@@ -36,13 +36,14 @@ struct Look {
 Look evaluate_material(const ir::Module& m, const Vec3& p);
 
 // A fractal node's colour values at p (in the node's own frame): its orbit
-// trap (smallest |coordinate| along the orbit) and its smooth iteration
-// count in [0, 1] (1: never escaped; the fold fractals never do). Empty for
-// other kinds.
+// trap (the smallest distance along the orbit to the trap's shape; by
+// default the smallest |coordinate|) and its smooth iteration count in
+// [0, 1] (1: never escaped; the fold fractals never do). Empty for other
+// kinds.
 struct OrbitColour {
   double trap;
   double iteration;
 };
-std::optional<OrbitColour> orbit_colour(const ir::Node& fractal, const Vec3& p);
+std::optional<OrbitColour> orbit_colour(const ir::Node& fractal, const Vec3& p, const ir::TrapShape& shape = {});
 
 }  // namespace sdfc::reference
