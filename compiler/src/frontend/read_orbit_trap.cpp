@@ -52,6 +52,11 @@ using Shape = ir::TrapShape::Kind;
 
 // shape and the keys that place it; a key of another shape is refused.
 void read_trap_shape(ValueReader& r, MapReader& m, const std::string& what, ir::TrapShape& t) {
+  if (const SourceValue* v = m.get("shape"); v && v->is_scalar() && v->scalar == "axis") {
+    r.sink().error(v->loc, what + ".shape: expected one of cross, point, plane, line, sphere, got 'axis'",
+                   "an axis is 'shape: line', with 'point' and 'direction'");
+    return;
+  }
   const std::string shape = m.word("shape", "cross", {"cross", "point", "plane", "line", "sphere"});
   t.kind = shape == "point"    ? Shape::Point
            : shape == "plane"  ? Shape::Plane
