@@ -14,6 +14,7 @@
 #include "scene_name.hpp"
 #include "read_effects.hpp"
 #include "read_orbit_trap.hpp"
+#include "read_transport.hpp"
 
 namespace sdfc {
 
@@ -95,7 +96,8 @@ void read_camera(ValueReader& r, const SourceValue& v, ir::Camera& cam) {
 void read_render(ValueReader& r, const SourceValue& v, ir::MarchSettings& s) {
   MapReader m(r, v, "render", {"width", "height", "precision", "max_steps", "hit_epsilon", "max_distance",
                                "step_factor", "gamma", "normals", "lipschitz_correction", "samples", "filter",
-                               "sampling", "dither", "exposure", "tone_mapping", "normal_step", "refine", "alpha"});
+                               "sampling", "dither", "exposure", "tone_mapping", "normal_step", "refine", "alpha",
+                               "integrator", "max_bounces", "firefly_clamp"});  // the last three: read_transport.cpp
   s.width = m.integer("width", s.width, 1, 16384);
   s.height = m.integer("height", s.height, 1, 16384);
   s.precision = m.word("precision", "float", {"float", "double"}) == "double" ? ir::Precision::Double : ir::Precision::Float;
@@ -218,12 +220,14 @@ void read_materials(ValueReader& r, const SourceValue& v, ir::RenderPlan& plan) 
       r.sink().error(key.loc, "'default' is the built-in material's name", "choose another name");
       continue;
     }
-    MapReader m(r, body, "material '" + md.name + "'", {"color", "specular", "shininess", "orbit_trap", "reflectivity"});
+    MapReader m(r, body, "material '" + md.name + "'", {"color", "specular", "shininess", "orbit_trap", "reflectivity",
+                                                            "roughness", "metalness", "emission"});
     md.color = m.vec3("color", md.color, Range::closed(0, 1));
     md.specular = m.number("specular", md.specular, Range::closed(0, 100));
     md.shininess = m.number("shininess", md.shininess, Range::closed(1, 10000));
     md.reflectivity = m.number("reflectivity", md.reflectivity, Range::closed(0, 1));
     if (const SourceValue* t = m.get("orbit_trap")) frontend::read_orbit_trap(r, *t, md);
+    frontend::read_material_pbr(r, body, "material '" + md.name + "'", md);
     plan.materials.push_back(md);
   }
 }
@@ -281,7 +285,7 @@ ir::Module lower_scene(const SourceValue& doc, const std::string& source_name) {
   builtin.name = "default";
   plan.materials.push_back(builtin);
   if (auto* v = top.get("camera")) read_camera(r, *v, plan.camera);
-  if (auto* v = top.get("render")) read_render(r, *v, plan.march);
+  if (auto* v = top.get("render")) read_render(r, *v, plan.march), frontend::read_transport(r, *v, plan.transport);
   if (auto* v = top.get("background")) read_background(r, *v, plan.background);
   if (auto* v = top.get("materials")) read_materials(r, *v, plan);
   if (auto* v = top.get("effects")) frontend::read_effects(r, *v, plan.effects);

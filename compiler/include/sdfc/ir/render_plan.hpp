@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "sdfc/ir/transport.hpp"
 #include "sdfc/support/diagnostics.hpp"
 
 namespace sdfc::ir {
@@ -152,6 +153,11 @@ struct MaterialDef {
   double trap_offset = 0, trap_cycles = 1;
   enum class TrapRepeat { Clamp, Repeat, Mirror } trap_repeat = TrapRepeat::Clamp;
   double reflectivity = 0;  // reflectance at normal incidence (Fresnel-Schlick R0)
+  // The path integrator's surface (issue 24): a GGX lobe when `glossy`
+  // (roughness or metalness given), light emitted by the surface.
+  bool glossy = false;
+  double roughness = 0.5, metalness = 0;
+  Vec3d emission{0, 0, 0};
   SourceLoc loc;
 };
 
@@ -200,6 +206,7 @@ struct RenderPlan {
   // Material id i is materials[i]; id 0 is the default material.
   std::vector<MaterialDef> materials;
   Effects effects;
+  Transport transport;
 };
 
 }  // namespace sdfc::ir

@@ -1,0 +1,13 @@
+#pragma once
+// The path integrator's settings (issue 24): `render.integrator`,
+// `render.max_bounces`, `render.firefly_clamp`, and a material's `roughness`,
+// `metalness` and `emission` (docs/scene-format.md, "Light transport").
+// The keys are allowed by the readers of `render` and of a material; these
+// functions only read them.
+#include "sdfc/frontend/value_reader.hpp"
+#include "sdfc/ir/render_plan.hpp"
+
+namespace sdfc::frontend {
+void read_transport(ValueReader& r, const SourceValue& render, ir::Transport& t);
+void read_material_pbr(ValueReader& r, const SourceValue& body, const std::string& what, ir::MaterialDef& md);
+}  // namespace sdfc::frontend
