@@ -78,10 +78,35 @@ TEST(PathCodegen, EachPartOnlyWhenUsed) {
   }
 }
 
+// background.sky brings shade_sky and a sun (a directional light with hard
+// shadows) to either integrator; a gradient background neither.
+TEST(PathCodegen, SkyOnlyWhenUsed) {
+  const std::string scene = "scene:\n  union:\n    - plane: {}\n    - sphere: {radius: 1}\n";
+  for (const char* integrator : {"direct", "path"}) {
+    std::string render = std::string("render: {integrator: ") + integrator + "}\n";
+    std::string plain = kernel_of(render + scene);
+    EXPECT_FALSE(has(plain, "shade_sky")) << integrator;
+    std::string sky = kernel_of(render + "background: {sky: {sun_direction: [0.3, -0.4, 0.5], turbidity: 4}}\n" + scene);
+    EXPECT_TRUE(has(sky, "shade_sky(rd, ")) << integrator;
+    EXPECT_FALSE(has(sky, "shade_background")) << integrator;
+    EXPECT_TRUE(has(sky, "shadow_hard")) << integrator << ": the sun casts shadows";
+  }
+  // the sun replaces the default key light; a set sun does not shine
+  auto lights = [](const std::string& yaml) {
+    int n = 0;
+    for (const auto& l : test::compile_text(yaml).plan.lights) n += l.kind == ir::LightKind::Directional;
+    return n;
+  };
+  EXPECT_EQ(lights("background: {sky: {sun_direction: [0, 0.5, 1]}}\n" + scene), 1);
+  EXPECT_EQ(lights("background: {sky: {sun_direction: [0, 1, -0.5]}}\n" + scene), 0);
+  EXPECT_EQ(lights("background: {sky: {}}\nlights:\n  - directional: {direction: [0, 0, -1]}\n" + scene), 2);
+}
+
 TEST(PathCodegen, BadSettingsAreLocated) {
   for (const char* bad : {"render: {integrator: paths}\n", "render: {integrator: path, max_bounces: 0}\n",
                           "render: {firefly_clamp: -1}\n", "materials: {m: {roughness: 2}}\n",
-                          "materials: {m: {emission: [1, 1]}}\n"}) {
+                          "materials: {m: {emission: [1, 1]}}\n", "background: {sky: {turbidity: 20}}\n",
+                          "background: {sky: {sun_direction: [0, 0, 0]}}\n", "background: {sky: {sun: 1}}\n"}) {
     try {
       test::compile_text(std::string(bad) + "scene: {sphere: {}}\n");
       ADD_FAILURE() << "accepted " << bad;

@@ -110,6 +110,31 @@ TEST(PathRender, EnergyNeverGrowsWithBounces) {
   EXPECT_LT(means[3], 1.0);
 }
 
+// The firefly clamp only ever removes light, and only indirect light: a
+// clamp far above every value changes nothing.
+TEST(PathRender, FireflyClampOnlyDarkens) {
+  auto scene = [](const std::string& clamp) {
+    return "camera: {position: [2.5, -3, 1.5], target: [0, 0, 0.4], fov: 45}\n"
+           "render: {width: 32, height: 24, samples: 8, gamma: 1, integrator: path, max_bounces: 4" + clamp + "}\n"
+           "background: {top: [0.6, 0.7, 0.9], bottom: [0.2, 0.2, 0.2]}\n"
+           "lights:\n  - point: {position: [1, -1, 2], intensity: 3, shadows: hard}\n"
+           "materials:\n  m: {color: [0.7, 0.6, 0.5], roughness: 0.2}\n"
+           "scene:\n  union:\n    - plane: {}\n    - sphere: {radius: 0.5}\n      translate: [0, 0, 0.5]\n  material: m\n";
+  };
+  auto free = render_text(scene(""));
+  auto loose = render_text(scene(", firefly_clamp: 1000"));
+  auto tight = render_text(scene(", firefly_clamp: 0.02"));
+  double removed = 0;
+  for (int y = 0; y < free.image.height; ++y)
+    for (int x = 0; x < free.image.width; ++x)
+      for (int c = 0; c < 3; ++c) {
+        ASSERT_NEAR(loose.image.at(c, x, y), free.image.at(c, x, y), 1e-6f) << x << "," << y;
+        ASSERT_LE(tight.image.at(c, x, y), free.image.at(c, x, y) + 1e-6f) << x << "," << y;
+        removed += free.image.at(c, x, y) - tight.image.at(c, x, y);
+      }
+  EXPECT_GT(removed, 0.0);
+}
+
 // Pixels are seeded by their absolute position and sample: tiles and
 // packet shapes change nothing.
 TEST(PathRender, TilesAndPacketsDoNotChangeThePixels) {
@@ -141,6 +166,26 @@ TEST(PathRender, EmissionLightsTheScene) {
   auto floor = test::project(r.module.plan, {0.8, 0, 0});
   EXPECT_GT(test::brightness(r.image, floor), 0.05);
   image_mean(r.image);
+}
+
+// The sky: bluer above than at the horizon, finite everywhere, under both
+// integrators; a low sun turns the horizon warm.
+TEST(PathRender, SkyLooksLikeASky) {
+  for (const char* integrator : {"direct", "path"}) {
+    for (const char* sun : {"[0.3, -0.5, 0.8]", "[0.2, 1, 0.05]"}) {
+      auto r = render_text(fmt::format(
+          "camera: {{position: [0, -6, 0.5], target: [0, 0, 1.5], fov: 70}}\n"
+          "render: {{width: 32, height: 32, samples: 4, gamma: 1, integrator: {}, max_bounces: 2}}\n"
+          "background: {{sky: {{sun_direction: {}, turbidity: 3}}}}\n"
+          "scene: {{sphere: {{radius: 0.5}}}}\n",
+          integrator, sun));
+      image_mean(r.image);
+      const int top = 0, horizon = 19;  // 2 degrees above the horizon
+      EXPECT_GT(r.image.at(2, 2, top), r.image.at(0, 2, top)) << integrator << sun << ": the zenith is blue";
+      EXPECT_GT(r.image.at(0, 2, horizon) / r.image.at(2, 2, horizon), r.image.at(0, 2, top) / r.image.at(2, 2, top))
+          << integrator << sun << ": the horizon is paler or warmer than the zenith";
+    }
+  }
 }
 
 }  // namespace

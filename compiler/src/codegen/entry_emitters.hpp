@@ -23,6 +23,8 @@ bool any_glossy(const ir::RenderPlan& p);
 bool any_emission(const ir::RenderPlan& p);
 std::string surface_table(const ir::RenderPlan& plan, bool glossy, bool emission, const Literals& lit);
 std::string path_functions(const ir::Module& m, const ir::RenderPlan& plan, const Literals& lit, std::set<std::string>& used);
+// The background or sky along `rd`, as an expression (background_emitter.cpp).
+std::string background_call(const ir::RenderPlan& plan, const Literals& lit, std::set<std::string>& used);
 std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std::string>& used, const EmitOptions& opt);
 
 }  // namespace sdfc::codegen::detail

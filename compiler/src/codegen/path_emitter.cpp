@@ -111,7 +111,6 @@ std::string path_functions(const ir::Module& m, const ir::RenderPlan& plan, cons
   const bool clamp = tr.clamp > 0;
   used.insert("path_rand");
   used.insert("path_cosine_dir");
-  used.insert("shade_background");
   if (clamp) used.insert("path_firefly");
   if (glossy) {
     used.insert("path_glossy_eval");
@@ -148,9 +147,8 @@ std::string path_functions(const ir::Module& m, const ir::RenderPlan& plan, cons
   w.line("*normal = n; *mat = id; *steps = st;");
   w.line("escaped = !hit;  // a camera ray that runs out of steps shows the background, as in the direct integrator");
   w.close("}");
-  w.line("// the environment (the background) where the path leaves the scene; a path that runs out of steps is lost");
-  w.line(fmt::format("vec3 env = shade_background(rd, {}, {}, {});", lit.vec3(plan.camera.up), lit.vec3(plan.background.top),
-                     lit.vec3(plan.background.bottom)));
+  w.line("// the environment (the background or sky) where the path leaves the scene; a path that runs out of steps is lost");
+  w.line(fmt::format("vec3 env = {};", background_call(plan, lit, used)));
   add("v3_mul(thr, env)", "alive & escaped", "seg");
   w.line("alive = hit;");
   w.line("if (!M_ANY(alive)) break;");

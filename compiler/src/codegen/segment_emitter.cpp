@@ -73,9 +73,7 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
     w.line(fmt::format("mask hit = march_sphere_trace(TIME_ARG ro, rd, t0, t1, active, pixel_angle, {}, {}, {}, &t, &steps);",
                        lit.real(s.hit_epsilon), lit.real(s.step_factor), s.max_steps));
   }
-  used.insert("shade_background");
-  w.line(fmt::format("vec3 color = shade_background(rd, {}, {}, {});", lit.vec3(m.plan.camera.up),
-                     lit.vec3(m.plan.background.top), lit.vec3(m.plan.background.bottom)));
+  w.line(fmt::format("vec3 color = {};", background_call(m.plan, lit, used)));
   w.line("vec3 n = v3_splat(0.0f);");
   w.line("real mat = -1.0f;");
   if (refl_out) w.line("real refl = 0.0f;");

@@ -154,7 +154,8 @@ void read_background(ValueReader& r, const SourceValue& v, ir::Background& bg) {
     bg.top = bg.bottom = r.vec3(v, "background", unit);
     return;
   }
-  MapReader m(r, v, "background", {"top", "bottom"});
+  MapReader m(r, v, "background", {"top", "bottom", "sky"});
+  if (const SourceValue* sky = m.get("sky")) return frontend::read_sky(r, *sky, bg);  // read_transport.cpp
   bg.top = m.vec3("top", bg.top, unit);
   bg.bottom = m.vec3("bottom", bg.bottom, unit);
 }
@@ -291,11 +292,12 @@ ir::Module lower_scene(const SourceValue& doc, const std::string& source_name) {
   if (auto* v = top.get("effects")) frontend::read_effects(r, *v, plan.effects);
   if (auto* v = top.get("lights")) {
     read_lights(r, *v, plan);
-  } else {
+  } else if (!plan.background.sky.enabled) {  // a sky brings its sun instead
     ir::Light key;
     key.direction = {-0.577, 0.577, -0.577};
     plan.lights.push_back(key);
   }
+  frontend::add_sun(plan);  // background.sky: the sun is a light
   add_default_ambient(plan);
 
   ir::Builder b(*m.graph);

@@ -9,5 +9,11 @@
 
 namespace sdfc::frontend {
 void read_transport(ValueReader& r, const SourceValue& render, ir::Transport& t);
+// background: {sky: {sun_direction, turbidity, sun_intensity}}; fills
+// bg.sky (with its derived colours) and sets top/bottom to the sky's zenith
+// and horizon, so the default ambient fill matches it.
+void read_sky(ValueReader& r, const SourceValue& v, ir::Background& bg);
+// With a sky, its sun as a directional light with hard shadows.
+void add_sun(ir::RenderPlan& plan);
 void read_material_pbr(ValueReader& r, const SourceValue& body, const std::string& what, ir::MaterialDef& md);
 }  // namespace sdfc::frontend

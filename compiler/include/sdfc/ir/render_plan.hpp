@@ -102,9 +102,22 @@ inline void make_reference(MarchSettings& s, double hit_epsilon = kReferenceHitE
   s.dither = false;
 }
 
+// An analytic daylight sky (issue 24, `background: {sky: ...}`): colours
+// derived on the host from the sun's elevation and the turbidity
+// (sky_model.cpp); the sun itself is a directional light in `lights`.
+struct Sky {
+  bool enabled = false;
+  Vec3d sun_direction{0.4, -0.3, 0.6};  // towards the sun (unit)
+  double turbidity = 3;                 // 2 (clear) ... 10 (hazy)
+  double sun_intensity = 2.5;
+  Vec3d zenith{}, horizon{}, ground{}, glow{};  // derived
+  double glow_power = 8;                        // derived: the halo's falloff
+};
+
 struct Background {
   Vec3d top{0.45, 0.55, 0.7};
   Vec3d bottom{0.15, 0.17, 0.22};
+  Sky sky;
 };
 
 enum class LightKind { Directional, Point, Ambient };
