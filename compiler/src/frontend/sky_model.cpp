@@ -29,7 +29,7 @@ void read_sky(ValueReader& r, const SourceValue& v, ir::Background& bg) {
   sky.enabled = true;
   sky.sun_direction = m.direction("sun_direction", sky.sun_direction);
   sky.turbidity = m.number("turbidity", sky.turbidity, Range::closed(1.7, 10));
-  sky.sun_intensity = m.number("sun_intensity", sky.sun_intensity, Range::non_negative(1e4));
+  sky.sun_intensity = m.number("sun_intensity", 1.2, Range::non_negative(1e4));  // with the sky's light, a lit face near white
 }
 
 void add_sun(ir::RenderPlan& plan) {
