@@ -18,7 +18,10 @@ double estimated_cost_per_sample(const ir::Module& m) {
   for (const auto& l : p.lights)
     if (l.shadows != ir::Light::Shadows::None) evaluations += l.shadow_steps;
   if (p.effects.ambient_occlusion.enabled) evaluations += p.effects.ambient_occlusion.samples;
-  evaluations *= 1 + p.effects.reflections.depth;
+  if (p.transport.integrator == ir::Transport::Integrator::Path)
+    evaluations *= 1 + p.transport.max_bounces;  // every bounce marches, shades and casts its shadow rays
+  else
+    evaluations *= 1 + p.effects.reflections.depth;
   return evaluations * m.graph->node(m.root).props.cost;
 }
 

@@ -17,6 +17,7 @@ std::string where(const SourceLoc& loc) {
   return fmt::format("{}:{}", kernel_text(f), loc.line);
 }
 
+}  // namespace
 
 // The shadow factor towards a light (empty when the light casts none).
 // With the scene's bounds, the march stops where the shadow ray leaves them:
@@ -45,12 +46,8 @@ std::string shadow_call(const ir::Light& l, const std::string& to_light, std::st
   return fmt::format("shadow_soft(TIME_ARG {}, {}, {})", common, lit.real(l.softness), tail);
 }
 
-}  // namespace
-
-std::string emit_shading(const ir::RenderPlan& plan, const ir::Analyses& facts, const Literals& lit,
-                         std::set<std::string>& used) {
+std::string emit_material_table(const ir::RenderPlan& plan, const ir::Analyses& facts, const Literals& lit) {
   const bool blended = facts.material_blend;
-  const ir::RayBounds* bounds = facts.ray_bounds ? &*facts.ray_bounds : nullptr;
   CodeWriter w;
   const auto& mats = plan.materials;
   const bool traps = facts.orbit_traps;  // any orbit-trap material: the trap value comes along
@@ -90,7 +87,16 @@ std::string emit_shading(const ir::RenderPlan& plan, const ir::Analyses& facts, 
     w.close("}");
     w.blank();
   }
+  return w.take();
+}
 
+std::string emit_shading(const ir::RenderPlan& plan, const ir::Analyses& facts, const Literals& lit,
+                         std::set<std::string>& used) {
+  const bool blended = facts.material_blend;
+  const ir::RayBounds* bounds = facts.ray_bounds ? &*facts.ray_bounds : nullptr;
+  const bool traps = facts.orbit_traps;  // any orbit-trap material: the trap value comes along
+  std::string trap_param = traps ? ", real trap" : "";
+  CodeWriter w;
   const bool ao = plan.effects.ambient_occlusion.enabled;
   bool any_shadows = false;
   for (const auto& l : plan.lights) any_shadows |= l.shadows != ir::Light::Shadows::None;
@@ -152,7 +158,7 @@ std::string emit_shading(const ir::RenderPlan& plan, const ir::Analyses& facts, 
   else w.line("(void)p; (void)n; (void)v;");
   w.line("return c;");
   w.close("}");
-  return w.take();
+  return emit_material_table(plan, facts, lit) + w.take();
 }
 
 }  // namespace sdfc::codegen::detail

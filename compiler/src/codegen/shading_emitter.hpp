@@ -14,6 +14,13 @@ namespace sdfc::codegen::detail {
 // scene mixes materials (scene_material), so shade_surface takes the mixed
 // albedo, specular and shininess instead of a material id.
 // Shadow rays end where they leave the scene's ray bounds (facts.ray_bounds).
+// material_of() and, with reflections, material_reflectivity(): the part of
+// emit_shading that the path integrator shares.
+std::string emit_material_table(const ir::RenderPlan& plan, const ir::Analyses& facts, const Literals& lit);
+// The shadow factor towards a light as a call (empty when it casts none);
+// the caller's scope holds shadow_origin, footprint, hit and n.
+std::string shadow_call(const ir::Light& l, const std::string& to_light, std::string tmax, const Literals& lit,
+                        const ir::RayBounds* bounds, std::set<std::string>& used);
 std::string emit_shading(const ir::RenderPlan& plan, const ir::Analyses& facts, const Literals& lit,
                          std::set<std::string>& used);
 }  // namespace sdfc::codegen::detail

@@ -14,6 +14,7 @@
 #include "scene_name.hpp"
 #include "read_effects.hpp"
 #include "read_orbit_trap.hpp"
+#include "read_transport.hpp"
 
 namespace sdfc {
 
@@ -95,7 +96,8 @@ void read_camera(ValueReader& r, const SourceValue& v, ir::Camera& cam) {
 void read_render(ValueReader& r, const SourceValue& v, ir::MarchSettings& s) {
   MapReader m(r, v, "render", {"width", "height", "precision", "max_steps", "hit_epsilon", "max_distance",
                                "step_factor", "gamma", "normals", "lipschitz_correction", "samples", "filter",
-                               "sampling", "dither", "exposure", "tone_mapping", "normal_step", "refine", "alpha"});
+                               "sampling", "dither", "exposure", "tone_mapping", "normal_step", "refine", "alpha",
+                               "integrator", "max_bounces", "firefly_clamp"});  // the last three: read_transport.cpp
   s.width = m.integer("width", s.width, 1, 16384);
   s.height = m.integer("height", s.height, 1, 16384);
   s.precision = m.word("precision", "float", {"float", "double"}) == "double" ? ir::Precision::Double : ir::Precision::Float;
@@ -152,7 +154,8 @@ void read_background(ValueReader& r, const SourceValue& v, ir::Background& bg) {
     bg.top = bg.bottom = r.vec3(v, "background", unit);
     return;
   }
-  MapReader m(r, v, "background", {"top", "bottom"});
+  MapReader m(r, v, "background", {"top", "bottom", "sky"});
+  if (const SourceValue* sky = m.get("sky")) return frontend::read_sky(r, *sky, bg);  // read_transport.cpp
   bg.top = m.vec3("top", bg.top, unit);
   bg.bottom = m.vec3("bottom", bg.bottom, unit);
 }
@@ -218,7 +221,8 @@ void read_materials(ValueReader& r, const SourceValue& v, ir::RenderPlan& plan) 
       r.sink().error(key.loc, "'default' is the built-in material's name", "choose another name");
       continue;
     }
-    MapReader m(r, body, "material '" + md.name + "'", {"color", "specular", "shininess", "orbit_trap", "coloring", "reflectivity"});
+    MapReader m(r, body, "material '" + md.name + "'", {"color", "specular", "shininess", "orbit_trap", "coloring", "reflectivity",
+                                                            "roughness", "metalness", "emission"});
     md.color = m.vec3("color", md.color, Range::closed(0, 1));
     md.specular = m.number("specular", md.specular, Range::closed(0, 100));
     md.shininess = m.number("shininess", md.shininess, Range::closed(1, 10000));
@@ -230,6 +234,7 @@ void read_materials(ValueReader& r, const SourceValue& v, ir::RenderPlan& plan) 
                        "an orbit_trap is a coloring with one trap source");
       else frontend::read_coloring(r, *c, md);
     }
+    frontend::read_material_pbr(r, body, "material '" + md.name + "'", md);
     plan.materials.push_back(md);
   }
 }
@@ -287,17 +292,18 @@ ir::Module lower_scene(const SourceValue& doc, const std::string& source_name) {
   builtin.name = "default";
   plan.materials.push_back(builtin);
   if (auto* v = top.get("camera")) read_camera(r, *v, plan.camera);
-  if (auto* v = top.get("render")) read_render(r, *v, plan.march);
+  if (auto* v = top.get("render")) read_render(r, *v, plan.march), frontend::read_transport(r, *v, plan.transport);
   if (auto* v = top.get("background")) read_background(r, *v, plan.background);
   if (auto* v = top.get("materials")) read_materials(r, *v, plan);
   if (auto* v = top.get("effects")) frontend::read_effects(r, *v, plan.effects);
   if (auto* v = top.get("lights")) {
     read_lights(r, *v, plan);
-  } else {
+  } else if (!plan.background.sky.enabled) {  // a sky brings its sun instead
     ir::Light key;
     key.direction = {-0.577, 0.577, -0.577};
     plan.lights.push_back(key);
   }
+  frontend::add_sun(plan);  // background.sky: the sun is a light
   add_default_ambient(plan);
 
   ir::Builder b(*m.graph);

@@ -92,10 +92,13 @@ ReloadResult SceneSession::reload() {
 double SceneSession::distance_at(const ir::Vec3d& p) const { return reference::distance(*module_, p); }
 
 std::vector<float> SceneSession::frame_for(const ir::Camera& camera, int width, int height, double time,
-                                           double offset_x, double offset_y) const {
+                                           double offset_x, double offset_y, int pass) const {
   ir::RenderPlan plan = module_->plan;
   plan.camera = camera;
   std::vector<float> frame = codegen::frame_params(plan, width, height, time);
+  // the path integrator: each still pass draws the next render.samples samples, so the image converges
+  if (plan.transport.integrator == ir::Transport::Integrator::Path)
+    frame[abi::kFirstSample] = static_cast<float>(static_cast<long long>(pass) * plan.march.samples);
   if (offset_x != 0 || offset_y != 0) offset_frame_rays(frame, width, height, offset_x, offset_y);
   return frame;
 }
@@ -109,7 +112,7 @@ sdfrt::FloatImage SceneSession::render(const ir::Camera& camera, int width, int 
 std::optional<sdfrt::FloatImage> SceneSession::render_interruptible(const ir::Camera& camera, int width, int height,
                                                                     double time, double offset_x, double offset_y,
                                                                     const std::function<bool()>& interrupt,
-                                                                    sdfrt::RenderStats* stats) {
+                                                                    sdfrt::RenderStats* stats, int pass) {
   std::atomic<bool> stop{false};
   sdfrt::RenderOptions opt = viewer_render_options();
   opt.cancel = &stop;
@@ -117,7 +120,7 @@ std::optional<sdfrt::FloatImage> SceneSession::render_interruptible(const ir::Ca
     if (interrupt()) stop = true;
   };
   try {
-    return renderer_->render(frame_for(camera, width, height, time, offset_x, offset_y), width, height, opt, stats);
+    return renderer_->render(frame_for(camera, width, height, time, offset_x, offset_y, pass), width, height, opt, stats);
   } catch (const sdfrt::Cancelled&) {
     return std::nullopt;
   }

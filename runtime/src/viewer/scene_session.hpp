@@ -55,12 +55,13 @@ class SceneSession {
   // anti-aliasing; {0, 0} is exactly what `sdfc render` computes.
   sdfrt::FloatImage render(const ir::Camera& camera, int width, int height, double time,
                            double offset_x = 0, double offset_y = 0, sdfrt::RenderStats* stats = nullptr);
-  // The same, but `interrupt` is asked between tiles; when it returns true
+  // The same, but `interrupt` is asked between tiles (pass: the still
+  // frame's index, which the path integrator turns into fresh samples); when it returns true
   // the frame is abandoned and nullopt returned.
   std::optional<sdfrt::FloatImage> render_interruptible(const ir::Camera& camera, int width, int height,
                                                         double time, double offset_x, double offset_y,
                                                         const std::function<bool()>& interrupt,
-                                                        sdfrt::RenderStats* stats = nullptr);
+                                                        sdfrt::RenderStats* stats = nullptr, int pass = 0);
 
  private:
   struct Stamp {
@@ -70,7 +71,7 @@ class SceneSession {
   Stamp read_stamp() const;
   void compile();  // throws; replaces module_/renderer_ only on success
   std::vector<float> frame_for(const ir::Camera& camera, int width, int height, double time, double offset_x,
-                               double offset_y) const;
+                               double offset_y, int pass = 0) const;
 
   sdfrt::Device* device_;
   SceneOptions options_;

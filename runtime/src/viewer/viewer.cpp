@@ -165,7 +165,8 @@ void Viewer::render_still() {
   auto [ox, oy] = sample_offset(samples_.samples());
   sdfrt::RenderStats st;
   std::optional<sdfrt::FloatImage> img = scene_.render_interruptible(rig_.camera(), opt_.width, opt_.height, 0.0, ox,
-                                                                     oy, [this] { return input_pending(); }, &st);
+                                                                     oy, [this] { return input_pending(); }, &st,
+                                                                     samples_.samples());
   if (!img) {
     last_.rendered = false;
     return;  // moved_ stays as it was: the next still frame starts over

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "sdfc/ir/transport.hpp"
 #include "sdfc/support/diagnostics.hpp"
 
 namespace sdfc::ir {
@@ -101,9 +102,22 @@ inline void make_reference(MarchSettings& s, double hit_epsilon = kReferenceHitE
   s.dither = false;
 }
 
+// An analytic daylight sky (issue 24, `background: {sky: ...}`): colours
+// derived on the host from the sun's elevation and the turbidity
+// (sky_model.cpp); the sun itself is a directional light in `lights`.
+struct Sky {
+  bool enabled = false;
+  Vec3d sun_direction{0.4, -0.3, 0.6};  // towards the sun (unit)
+  double turbidity = 3;                 // 2 (clear) ... 10 (hazy)
+  double sun_intensity = 2.5;
+  Vec3d zenith{}, horizon{}, ground{}, glow{};  // derived
+  double glow_power = 8;                        // derived: the halo's falloff
+};
+
 struct Background {
   Vec3d top{0.45, 0.55, 0.7};
   Vec3d bottom{0.15, 0.17, 0.22};
+  Sky sky;
 };
 
 enum class LightKind { Directional, Point, Ambient };
@@ -200,6 +214,11 @@ struct MaterialDef {
     return false;
   }
   double reflectivity = 0;  // reflectance at normal incidence (Fresnel-Schlick R0)
+  // The path integrator's surface (issue 24): a GGX lobe when `glossy`
+  // (roughness or metalness given), light emitted by the surface.
+  bool glossy = false;
+  double roughness = 0.5, metalness = 0;
+  Vec3d emission{0, 0, 0};
   SourceLoc loc;
 };
 
@@ -248,6 +267,7 @@ struct RenderPlan {
   // Material id i is materials[i]; id 0 is the default material.
   std::vector<MaterialDef> materials;
   Effects effects;
+  Transport transport;
 };
 
 }  // namespace sdfc::ir

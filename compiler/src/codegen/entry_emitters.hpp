@@ -1,0 +1,30 @@
+#pragma once
+// The kernel's entry-point functions, one emitter per file: the ray segment
+// and the radiance of one camera ray (segment_emitter.cpp, the direct
+// integrator), the path integrator (path_emitter.cpp) and the render kernel
+// that places the samples (render_kernel_emitter.cpp).
+#include <set>
+#include <string>
+
+#include "code_writer.hpp"
+#include "sdfc/codegen/emit_opencl.hpp"
+#include "sdfc/ir/module.hpp"
+
+namespace sdfc::codegen::detail {
+
+std::string segment_function(const ir::Module& m, const Literals& lit, std::set<std::string>& used);
+std::string radiance_function(const ir::Module& m, std::set<std::string>& used);
+// The path integrator's functions (render.integrator: path): the material
+// table, the path's materials, sdfc_path_hit and sdfc_path. plan: the
+// module's plan with the orbit traps' measured ranges.
+// Whether any material has a GGX lobe (roughness or metalness) or emission,
+// and path_surface() for them (path_surface_emitter.cpp).
+bool any_glossy(const ir::RenderPlan& p);
+bool any_emission(const ir::RenderPlan& p);
+std::string surface_table(const ir::RenderPlan& plan, bool glossy, bool emission, const Literals& lit);
+std::string path_functions(const ir::Module& m, const ir::RenderPlan& plan, const Literals& lit, std::set<std::string>& used);
+// The background or sky along `rd`, as an expression (background_emitter.cpp).
+std::string background_call(const ir::RenderPlan& plan, const Literals& lit, std::set<std::string>& used);
+std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std::string>& used, const EmitOptions& opt);
+
+}  // namespace sdfc::codegen::detail

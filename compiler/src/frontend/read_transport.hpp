@@ -1,0 +1,19 @@
+#pragma once
+// The path integrator's settings (issue 24): `render.integrator`,
+// `render.max_bounces`, `render.firefly_clamp`, and a material's `roughness`,
+// `metalness` and `emission` (docs/scene-format.md, "Light transport").
+// The keys are allowed by the readers of `render` and of a material; these
+// functions only read them.
+#include "sdfc/frontend/value_reader.hpp"
+#include "sdfc/ir/render_plan.hpp"
+
+namespace sdfc::frontend {
+void read_transport(ValueReader& r, const SourceValue& render, ir::Transport& t);
+// background: {sky: {sun_direction, turbidity, sun_intensity}}; fills
+// bg.sky (with its derived colours) and sets top/bottom to the sky's zenith
+// and horizon, so the default ambient fill matches it.
+void read_sky(ValueReader& r, const SourceValue& v, ir::Background& bg);
+// With a sky, its sun as a directional light with hard shadows.
+void add_sun(ir::RenderPlan& plan);
+void read_material_pbr(ValueReader& r, const SourceValue& body, const std::string& what, ir::MaterialDef& md);
+}  // namespace sdfc::frontend
