@@ -72,7 +72,7 @@ int run_farm_slurm(const FarmSlurmArgs& a) {
   if (a.bit_depth != 8) job.render_args.insert(job.render_args.end(), {"--bit-depth", std::to_string(a.bit_depth)});
   // The scene must load with its overrides before anything is queued.
   std::vector<std::string> sets = a.scene.sets;
-  int frame_count = 0;
+  std::int64_t frame_count = 0;
   if (!a.still.empty()) {
     std::smatch m;
     static const std::regex re(R"(^(\d{1,5})x(\d{1,5})$)");
@@ -90,14 +90,15 @@ int run_farm_slurm(const FarmSlurmArgs& a) {
   } else {
     if (a.parts > 0) throw std::invalid_argument("--parts splits a --still; an animation is split by its frames");
     job.frames = a.frames;
-    frame_count = int(parse_frames(a.frames).size());
+    frame_count = parse_frames(a.frames).size();
     if (frame_count > 1 && !has_frame_field(a.output))
       throw std::invalid_argument(fmt::format(
-          "-o '{}': {} frames need a frame-number field in the name, e.g. out/frame_%04d.png", a.output, frame_count));
+          "-o '{}': {} frames need one frame-number field in the name, e.g. out/frame_%04d.png "
+          "(write %% for a '%')", a.output, frame_count));
     if (a.fps != 30) job.render_args.insert(job.render_args.end(), {"--fps", fmt::format("{}", a.fps)});
   }
   build_module(load_scene_source(a.scene.path, sets), a.scene.path);
-  job.tasks = a.tasks > 0 ? a.tasks : std::min(frame_count, 1000);
+  job.tasks = a.tasks > 0 ? a.tasks : int(std::min<std::int64_t>(frame_count, 1000));
   if (job.tasks > frame_count)
     throw std::invalid_argument(fmt::format("--tasks {}: there are only {} {} to share", job.tasks, frame_count,
                                             job.parts > 0 ? "parts" : "frames"));

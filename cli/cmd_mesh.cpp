@@ -78,11 +78,12 @@ int run_mesh(const MeshArgs& a) {
   const auto format = sdfrt::mesh::format_for(a.output);
   if (!format)
     throw std::invalid_argument(fmt::format("-o '{}': a mesh file ends in .stl, .obj or .ply", a.output));
-  std::vector<int> frames = a.frames.empty() ? std::vector<int>{0} : parse_frames(a.frames);
+  const FrameRange frames = a.frames.empty() ? FrameRange{} : parse_frames(a.frames);
   const bool sequence = !a.frames.empty();
   if (sequence && frames.size() > 1 && !has_frame_field(a.output))
     throw std::invalid_argument(fmt::format(
-        "-o '{}': {} frames need a frame-number field in the name, e.g. out/bulb_%04d.ply", a.output, frames.size()));
+        "-o '{}': {} frames need one frame-number field in the name, e.g. out/bulb_%04d.ply "
+        "(write %% for a '%')", a.output, frames.size()));
   SourceValue doc = load_scene_source(a.scene.path, a.scene.sets);
   ir::Module m = build_module(doc, a.scene.path);
   const Region region = a.bounds.empty() ? scene_region(m) : parse_bounds(a.bounds);
@@ -121,7 +122,8 @@ int run_mesh(const MeshArgs& a) {
           blocks, bytes / (1u << 30), limit / (1u << 30)));
   };
   std::signal(SIGINT, on_mesh_sigint);
-  for (int fno : frames) {
+  for (std::int64_t i = 0; i < frames.size(); ++i) {
+    const int fno = frames.at(i);
     sdfrt::mesh::GridSpec grid = base;
     grid.time = fno / a.fps;
     const std::string path = sequence && has_frame_field(a.output) ? frame_path(a.output, fno) : a.output;
