@@ -107,7 +107,9 @@ int run_farm_slurm(const FarmSlurmArgs& a) {
   const std::string base = fs::absolute(a.script.empty() ? base_of(a.output) : a.script).lexically_normal().string();
   job.name = "sdfc-" + fs::path(base).filename().string();
   job.log_dir = base + ".logs";
-  job.parts_pattern = base + ".parts/part_%03d.region";
+  // A '%' of the output's name is "%%" in the pattern (frame_path makes it one again).
+  job.parts_pattern = std::regex_replace(base, std::regex("%"), "%%") + ".parts/part_%03d.region";
+  const fs::path parts_dir = base + ".parts";
   for (int k = 0; k < job.parts; ++k) job.part_files.push_back(frame_path(job.parts_pattern, k));
   job.cache_dir = fs::absolute(a.cache_dir.empty() ? fs::path(base).parent_path() / "sdfc-kernel-cache" : fs::path(a.cache_dir))
                       .lexically_normal()
@@ -118,10 +120,9 @@ int run_farm_slurm(const FarmSlurmArgs& a) {
                                 {"--script", job.log_dir}, {"--script", job.name}, {"--cache-dir", job.cache_dir}})
     check_sbatch_value(what, v);
 
-  for (const fs::path& dir : {fs::path(job.log_dir), fs::path(job.parts_pattern).parent_path(),
-                              fs::path(job.output).parent_path()}) {
+  for (const fs::path& dir : {fs::path(job.log_dir), parts_dir, fs::path(job.output).parent_path()}) {
     std::error_code ec;
-    if (job.parts == 0 && dir == fs::path(job.parts_pattern).parent_path()) continue;
+    if (job.parts == 0 && dir == parts_dir) continue;
     fs::create_directories(dir, ec);
     if (ec) throw sdfrt::IoError(fmt::format("cannot create '{}': {}", dir.string(), ec.message()), dir.string(), ec.value());
   }
