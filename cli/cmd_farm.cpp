@@ -175,7 +175,9 @@ Action add_farm(CLI::App& app) {
       ->required();
   cmd->add_option("--aov", a->aovs, "AOVs to write too (as for sdfc render)")->delimiter(',')->check(CLI::IsMember(kAovNames));
   cmd->add_option("--bit-depth", a->bit_depth, "PNG bits per channel: 8 or 16")->check(CLI::IsMember({8, 16}));
-  cmd->add_option("--fps", a->fps, "Frames per second for --frames (default 30)")->check(CLI::Range(0.001, 10000.0));
+  cmd->add_option("--fps", a->fps, "Frames per second for --frames (default 30)")
+      ->check(CLI::Range(0.001, 10000.0))
+      ->check(finite_number());
   cmd->add_option("--script", a->script,
                   "Where the scripts go, without extension (default: beside -o, e.g. out/frame.sbatch)");
   cmd->add_option("--cache-dir", a->cache_dir,

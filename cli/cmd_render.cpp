@@ -277,7 +277,7 @@ Action add_render(CLI::App& app) {
       ->delimiter(',')
       ->check(CLI::IsMember(kAovNames));
   cmd->add_option("--frames", a->frames, "Render frames N, FIRST:LAST or FIRST:LAST:STEP at time = frame / fps; "
-                                         "-o then needs a field such as %04d");
+                                         "-o then needs a field such as %04d (%% for a '%')");
   cmd->add_option("--fps", a->fps, "Frames per second for --frames (default 30)")
       ->check(CLI::Range(0.001, 10000.0))
       ->check(finite_number());

@@ -74,6 +74,26 @@ TEST(AcceptedBuilds, BadNumbersOnTheCommandLineAreUsageErrors) {
   }
 }
 
+// CLI::Range lets NaN through: every floating-point option of every command
+// refuses it (mesh --fps nan meshed at time NaN; render's was fixed alone).
+TEST(AcceptedBuilds, NanIsRefusedByEveryNumberOption) {
+  ScratchDir dir;
+  const std::string scene = dir.write("s.yaml", kView + "scene: {sphere: {radius: 1}}\n");
+  for (const std::string& args :
+       {"mesh " + scene + " --frames 0:1 --fps nan -o " + dir.file("m_%d.stl"), "mesh " + scene + " --iso nan -o " + dir.file("m.stl"),
+        "mesh " + scene + " --voxel nan -o " + dir.file("m.stl"), "mesh " + scene + " --adaptivity nan -o " + dir.file("m.stl"),
+        "mesh " + scene + " --memory-limit nan -o " + dir.file("m.stl"),
+        "farm slurm " + scene + " --frames 0:1 --fps nan -o " + dir.file("f_%d.png"),
+        "compare " + scene + " " + scene + " --pixel-threshold nan", "view " + scene + " --benchmark nan",
+        "view " + scene + " --orbit-degrees nan"}) {
+    SCOPED_TRACE(args);
+    RunResult r = run_sdfc(args);
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("finite"), std::string::npos) << r.err;
+  }
+  EXPECT_EQ(dir_entries(dir.path()), std::vector<std::string>{"s.yaml"}) << "nothing was written";
+}
+
 TEST(AcceptedBuilds, MaxDistanceHoldsOnTheFirstStep) {
   ScratchDir dir;
   auto image = [&](const std::string& extra_render, const std::string& where) {
