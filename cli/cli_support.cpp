@@ -56,6 +56,9 @@ void warn_if_camera_inside(const ir::Module& m, const std::string& scene_path) {
   const ir::Camera& cam = m.plan.camera;
   std::vector<ir::CameraKey> where = cam.path;
   if (where.empty()) where.push_back({0, cam.position, cam.target});
+  // One evaluation on the CPU per key; a scene past --allow-slow's limit can
+  // cost 1e13 operations an evaluation (nested polar_repeat): not checked.
+  if (!(m.graph->node(m.root).props.cost < 1e6)) return;
   const bool animated = m.graph->animated(m.root);
   for (const ir::CameraKey& key : where) {
     const double d = reference::distance(animated ? reference::at_time(m, key.time) : m, key.position);

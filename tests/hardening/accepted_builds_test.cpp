@@ -34,7 +34,7 @@ TEST(AcceptedBuilds, AOneStepHybridBuilds) {
 
 TEST(AcceptedBuilds, ScalesAndGammaWhoseInverseIsNoFloatAreRefused) {
   ScratchDir dir;
-  for (const std::string& bad : {"scene: {sphere: {radius: 1}, scale: 1e-300}\n",
+  for (const char* bad : {"scene: {sphere: {radius: 1}, scale: 1e-300}\n",
                                  "scene: {sphere: {radius: 1}, scale: [1e-39, 1, 1]}\n",
                                  "render: {gamma: 1e-300}\nscene: {sphere: {radius: 1}}\n"}) {
     SCOPED_TRACE(bad);
@@ -111,7 +111,7 @@ TEST(AcceptedBuilds, MaxDistanceHoldsOnTheFirstStep) {
 
 TEST(AcceptedBuilds, ValuesThatRenderNothingAreRefused) {
   ScratchDir dir;
-  for (const std::string& bad : {"render: {normal_step: 1e-300}\nscene: {sphere: {radius: 1}}\n",
+  for (const char* bad : {"render: {normal_step: 1e-300}\nscene: {sphere: {radius: 1}}\n",
                                  "camera: {fov: 1e-300}\nscene: {sphere: {radius: 1}}\n",
                                  "scene: {sphere: {radius: 1}, displace: {expr: \"0.01*sin(exp(100*x))\"}}\n"}) {
     SCOPED_TRACE(bad);
@@ -123,7 +123,7 @@ TEST(AcceptedBuilds, ValuesThatRenderNothingAreRefused) {
 
 TEST(AcceptedBuilds, ScenesTheDocsCallValidAreAccepted) {
   ScratchDir dir;
-  for (const std::string& good : {
+  for (const char* good : {
            "scene: {sphere: {radius: 1}, displace: {expr: \"0.1*sin(x)*sin(x)\"}}\n",
            "scene: {link: {length: 0.5, major_radius: 0.4, minor_radius: 0.1}, displace: {expr: \"0.074*sin(2.745*z)\"}}\n",
            "scene: {quad: {a: [-0.5, -0.5, 0], b: [0.5, -0.5, 0.0001], c: [0.5, 0.5, 0], d: [-0.5, 0.5, 0.0001], "
