@@ -14,7 +14,10 @@
 #include <sdfrt/errors.hpp>
 #include <sdfrt/output_file.hpp>
 
+#include "sdfc/reference/at_time.hpp"
+#include "sdfc/reference/evaluator.hpp"
 #include "sdfc/scene_caps.hpp"
+#include "sdfc/support/diagnostics.hpp"
 
 namespace sdfc::cli {
 
@@ -48,5 +51,28 @@ void write_text_output(const std::string& path, const std::string& text) {
 // 16 lanes fill AVX-512 and measured fastest on PoCL here (802 ms vs 1031 ms at 8
 // and 6341 ms per pixel for the 1280x720 Mandelbulb); GPUs want one pixel per work-item.
 int default_simd_width(bool device_is_cpu) { return device_is_cpu ? 16 : 1; }
+
+void warn_if_camera_inside(const ir::Module& m, const std::string& scene_path) {
+  const ir::Camera& cam = m.plan.camera;
+  std::vector<ir::CameraKey> where = cam.path;
+  if (where.empty()) where.push_back({0, cam.position, cam.target});
+  // One evaluation on the CPU per key; a scene past --allow-slow's limit can
+  // cost 1e13 operations an evaluation (nested polar_repeat): not checked.
+  if (!(m.graph->node(m.root).props.cost < 1e6)) return;
+  const bool animated = m.graph->animated(m.root);
+  for (const ir::CameraKey& key : where) {
+    const double d = reference::distance(animated ? reference::at_time(m, key.time) : m, key.position);
+    if (!(d < 0)) continue;
+    const std::string at = cam.loc.line > 0 ? cam.loc.str() : scene_path;
+    const auto& p = key.position;
+    std::cerr << printable(fmt::format(
+                     "{}: warning: the camera at [{:g}, {:g}, {:g}]{} is inside a solid (the distance to its surface is "
+                     "{:.3g}): every ray hits where it starts, so the image shows no shape and its normals are "
+                     "unreliable (move the camera out)\n",
+                     at, p[0], p[1], p[2], cam.path.empty() ? "" : fmt::format(" (path key at time {:g})", key.time), d))
+              << std::flush;
+    return;  // once is enough
+  }
+}
 
 }  // namespace sdfc::cli

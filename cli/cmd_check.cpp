@@ -29,6 +29,7 @@ int run_check(const SceneArgs& args) {
   ir::Module m = build_module(doc, args.path, [&](std::string_view pass, const ir::Module& mod) {
     if (pass == "lower") lowered_nodes = ir::count_nodes(mod);
   });
+  warn_if_camera_inside(m, args.path);
   const ir::Graph& g = *m.graph;
   const ir::Props& root = g.node(m.root).props;
   fmt::print("{}: ok\n", args.path);

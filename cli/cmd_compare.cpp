@@ -3,6 +3,7 @@
 #include <iostream>
 #include <sdfrt/image_metrics.hpp>
 
+#include "cli_support.hpp"
 #include "commands.hpp"
 
 namespace sdfc::cli {
@@ -19,7 +20,8 @@ Action add_compare(CLI::App& app) {
   cmd->add_flag("--json", *json, "Print JSON instead of a table");
   cmd->add_option("--pixel-threshold", *threshold,
                   "A pixel differs when some channel differs by more than this many levels of 255 (default 4)")
-      ->check(CLI::Range(0.0, 255.0));
+      ->check(CLI::Range(0.0, 255.0))
+      ->check(finite_number());
   return [ref, test, json, threshold] {
     sdfrt::ComparisonMetrics m = sdfrt::compare_renders(sdfrt::load_render_outputs(*ref),
                                                         sdfrt::load_render_outputs(*test), *threshold / 255.0);

@@ -72,7 +72,7 @@ int run_farm_slurm(const FarmSlurmArgs& a) {
   if (a.bit_depth != 8) job.render_args.insert(job.render_args.end(), {"--bit-depth", std::to_string(a.bit_depth)});
   // The scene must load with its overrides before anything is queued.
   std::vector<std::string> sets = a.scene.sets;
-  int frame_count = 0;
+  std::int64_t frame_count = 0;
   if (!a.still.empty()) {
     std::smatch m;
     static const std::regex re(R"(^(\d{1,5})x(\d{1,5})$)");
@@ -90,14 +90,15 @@ int run_farm_slurm(const FarmSlurmArgs& a) {
   } else {
     if (a.parts > 0) throw std::invalid_argument("--parts splits a --still; an animation is split by its frames");
     job.frames = a.frames;
-    frame_count = int(parse_frames(a.frames).size());
+    frame_count = parse_frames(a.frames).size();
     if (frame_count > 1 && !has_frame_field(a.output))
       throw std::invalid_argument(fmt::format(
-          "-o '{}': {} frames need a frame-number field in the name, e.g. out/frame_%04d.png", a.output, frame_count));
+          "-o '{}': {} frames need one frame-number field in the name, e.g. out/frame_%04d.png "
+          "(write %% for a '%')", a.output, frame_count));
     if (a.fps != 30) job.render_args.insert(job.render_args.end(), {"--fps", fmt::format("{}", a.fps)});
   }
   build_module(load_scene_source(a.scene.path, sets), a.scene.path);
-  job.tasks = a.tasks > 0 ? a.tasks : std::min(frame_count, 1000);
+  job.tasks = a.tasks > 0 ? a.tasks : int(std::min<std::int64_t>(frame_count, 1000));
   if (job.tasks > frame_count)
     throw std::invalid_argument(fmt::format("--tasks {}: there are only {} {} to share", job.tasks, frame_count,
                                             job.parts > 0 ? "parts" : "frames"));
@@ -106,7 +107,9 @@ int run_farm_slurm(const FarmSlurmArgs& a) {
   const std::string base = fs::absolute(a.script.empty() ? base_of(a.output) : a.script).lexically_normal().string();
   job.name = "sdfc-" + fs::path(base).filename().string();
   job.log_dir = base + ".logs";
-  job.parts_pattern = base + ".parts/part_%03d.region";
+  // A '%' of the output's name is "%%" in the pattern (frame_path makes it one again).
+  job.parts_pattern = std::regex_replace(base, std::regex("%"), "%%") + ".parts/part_%03d.region";
+  const fs::path parts_dir = base + ".parts";
   for (int k = 0; k < job.parts; ++k) job.part_files.push_back(frame_path(job.parts_pattern, k));
   job.cache_dir = fs::absolute(a.cache_dir.empty() ? fs::path(base).parent_path() / "sdfc-kernel-cache" : fs::path(a.cache_dir))
                       .lexically_normal()
@@ -117,10 +120,9 @@ int run_farm_slurm(const FarmSlurmArgs& a) {
                                 {"--script", job.log_dir}, {"--script", job.name}, {"--cache-dir", job.cache_dir}})
     check_sbatch_value(what, v);
 
-  for (const fs::path& dir : {fs::path(job.log_dir), fs::path(job.parts_pattern).parent_path(),
-                              fs::path(job.output).parent_path()}) {
+  for (const fs::path& dir : {fs::path(job.log_dir), parts_dir, fs::path(job.output).parent_path()}) {
     std::error_code ec;
-    if (job.parts == 0 && dir == fs::path(job.parts_pattern).parent_path()) continue;
+    if (job.parts == 0 && dir == parts_dir) continue;
     fs::create_directories(dir, ec);
     if (ec) throw sdfrt::IoError(fmt::format("cannot create '{}': {}", dir.string(), ec.message()), dir.string(), ec.value());
   }
@@ -173,7 +175,9 @@ Action add_farm(CLI::App& app) {
       ->required();
   cmd->add_option("--aov", a->aovs, "AOVs to write too (as for sdfc render)")->delimiter(',')->check(CLI::IsMember(kAovNames));
   cmd->add_option("--bit-depth", a->bit_depth, "PNG bits per channel: 8 or 16")->check(CLI::IsMember({8, 16}));
-  cmd->add_option("--fps", a->fps, "Frames per second for --frames (default 30)")->check(CLI::Range(0.001, 10000.0));
+  cmd->add_option("--fps", a->fps, "Frames per second for --frames (default 30)")
+      ->check(CLI::Range(0.001, 10000.0))
+      ->check(finite_number());
   cmd->add_option("--script", a->script,
                   "Where the scripts go, without extension (default: beside -o, e.g. out/frame.sbatch)");
   cmd->add_option("--cache-dir", a->cache_dir,

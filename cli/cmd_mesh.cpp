@@ -78,11 +78,12 @@ int run_mesh(const MeshArgs& a) {
   const auto format = sdfrt::mesh::format_for(a.output);
   if (!format)
     throw std::invalid_argument(fmt::format("-o '{}': a mesh file ends in .stl, .obj or .ply", a.output));
-  std::vector<int> frames = a.frames.empty() ? std::vector<int>{0} : parse_frames(a.frames);
+  const FrameRange frames = a.frames.empty() ? FrameRange{} : parse_frames(a.frames);
   const bool sequence = !a.frames.empty();
   if (sequence && frames.size() > 1 && !has_frame_field(a.output))
     throw std::invalid_argument(fmt::format(
-        "-o '{}': {} frames need a frame-number field in the name, e.g. out/bulb_%04d.ply", a.output, frames.size()));
+        "-o '{}': {} frames need one frame-number field in the name, e.g. out/bulb_%04d.ply "
+        "(write %% for a '%')", a.output, frames.size()));
   SourceValue doc = load_scene_source(a.scene.path, a.scene.sets);
   ir::Module m = build_module(doc, a.scene.path);
   const Region region = a.bounds.empty() ? scene_region(m) : parse_bounds(a.bounds);
@@ -121,7 +122,8 @@ int run_mesh(const MeshArgs& a) {
           blocks, bytes / (1u << 30), limit / (1u << 30)));
   };
   std::signal(SIGINT, on_mesh_sigint);
-  for (int fno : frames) {
+  for (std::int64_t i = 0; i < frames.size(); ++i) {
+    const int fno = frames.at(i);
     sdfrt::mesh::GridSpec grid = base;
     grid.time = fno / a.fps;
     const std::string path = sequence && has_frame_field(a.output) ? frame_path(a.output, fno) : a.output;
@@ -181,22 +183,28 @@ Action add_mesh(CLI::App& app) {
                   ->check(CLI::Range(8, 16384));
   cmd->add_option("--voxel", a->voxel, "Voxel size in scene units, instead of --resolution")
       ->check(CLI::PositiveNumber)
+      ->check(finite_number())
       ->excludes(res);
   cmd->add_option("--bounds", a->bounds, "Region to mesh, x0,y0,z0,x1,y1,z1 (default: the scene's inferred bounds); the "
                                          "solid is cut closed at its faces");
   cmd->add_option("--adaptivity", a->adaptivity, "0 keeps every polygon; up to 1 merges polygons on flat parts "
                                                  "(fewer triangles)")
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(CLI::Range(0.0, 1.0))
+      ->check(finite_number());
   cmd->add_option("--iso", a->iso, "Take the surface at this distance in scene units: positive thickens thin parts, "
                                    "negative thins them (default 0; half a voxel for escape-time fractals: mandelbulb, "
-                                   "mandelbox, julia, hybrid)");
+                                   "mandelbox, julia, hybrid)")
+      ->check(finite_number());
   cmd->add_flag("--colour,--color", a->colour, "Per-vertex colour from the scene's materials and orbit traps (PLY, OBJ)");
   cmd->add_option("--frames", a->frames, "Mesh frames N, FIRST:LAST or FIRST:LAST:STEP at time = frame / fps; "
                                          "-o then needs a field such as %04d");
-  cmd->add_option("--fps", a->fps, "Frames per second for --frames (default 30)")->check(CLI::Range(0.001, 10000.0));
+  cmd->add_option("--fps", a->fps, "Frames per second for --frames (default 30)")
+      ->check(CLI::Range(0.001, 10000.0))
+      ->check(finite_number());
   cmd->add_option("--memory-limit", a->memory_limit_gib, "Refuse a mesh whose estimated memory exceeds this many GiB "
                                                          "(default: half the machine's memory)")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::PositiveNumber)
+      ->check(finite_number());
   cmd->add_flag("--force", a->force, "Mesh even when the memory estimate exceeds --memory-limit");
   cmd->add_flag("--dense", a->dense, "Sample every voxel instead of the narrow band (slow; for comparison)");
   cmd->add_flag("--check", a->check, "Check the mesh: watertight, consistently oriented, parts, Euler characteristic");

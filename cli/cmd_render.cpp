@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <climits>
 #include <filesystem>
 #include <atomic>
 #include <csignal>
@@ -112,6 +113,7 @@ int run_render(RenderArgs a) {
   if (a.samples > 0) a.scene.sets.push_back(fmt::format("render.samples={}", a.samples));
   SourceValue doc = load_scene_source(a.scene.path, a.scene.sets);
   ir::Module m = build_module(doc, a.scene.path);
+  warn_if_camera_inside(m, a.scene.path);
   if (a.reference) make_reference(m.plan.march, a.reference_epsilon, a.reference_samples, a.aovs);
   // The output's kind and its options are checked before the kernel builds.
   // A part of a still (--region, --parts) is a region file of display values, merged into a PNG.
@@ -159,7 +161,8 @@ int run_render(RenderArgs a) {
   std::signal(SIGTERM, on_sigint);  // a farm's scheduler stops a task so: temp files go, no partial image
   if (a.repeat > 0) return render_repeated({&renderer, &m.plan, a.tile, a.repeat, a.output, a.aovs, &g_cancel});
 
-  std::vector<int> frames = a.frames.empty() ? std::vector<int>{0} : parse_frames(a.frames);
+  // A range, never a list: --frames 0:2147483647 costs no memory.
+  const FrameRange frames = a.frames.empty() ? FrameRange{} : parse_frames(a.frames);
   const bool sequence = !a.frames.empty();
   if (frames.back() / a.fps > expr::kMaxTime)  // animated values are checked for t in [0, kMaxTime] only
     throw std::invalid_argument(fmt::format("--frames: frame {} is at t = {:.3g} s at {} fps, past the {:g} s over which "
@@ -171,7 +174,8 @@ int run_render(RenderArgs a) {
   sequence_number(frames, 0, a.number_from);  // checks --number-from
   if (!video && sequence && frames.size() > 1 && !has_frame_field(a.output))
     throw std::invalid_argument(fmt::format(
-        "-o '{}': {} frames need a frame-number field in the name, e.g. out/frame_%04d.png", a.output, frames.size()));
+        "-o '{}': {} frames need one frame-number field in the name, e.g. out/frame_%04d.png "
+        "(write %% for a '%')", a.output, frames.size()));
   OfflineOutput out;
   out.format = format;
   out.bit_depth = choices.bit_depth;
@@ -183,12 +187,13 @@ int run_render(RenderArgs a) {
   if (a.farm.splits_still()) return render_still_parts({&renderer, &m.plan, w, h, a.tile, out, a.output, &g_cancel}, a.farm);
   std::optional<VideoOutput> vid;
   if (video) {
-    vid.emplace(a.output, format, w, h, a.fps, choices.quality, static_cast<int>(frames.size()), a.quiet);
+    const int total = static_cast<int>(std::min<std::int64_t>(frames.size(), INT_MAX));  // for the progress line
+    vid.emplace(a.output, format, w, h, a.fps, choices.quality, total, a.quiet);
     out.video = vid->writer();
   }
-  std::size_t i = 0;  // fno's place in the whole --frames list, for --number-from
-  for (int fno : a.farm.frames_of_task(frames, sequence)) {
-    while (i + 1 < frames.size() && frames[i] != fno) ++i;
+  const IndexSlice mine = a.farm.task_slice(frames.size(), sequence);
+  for (std::int64_t i = mine.begin; i < mine.end; i += mine.stride) {  // i: the frame's place in --frames
+    const int fno = frames.at(i);
     const double time = fno / a.fps;
     out.beauty = sequence && has_frame_field(a.output) ? frame_path(a.output, sequence_number(frames, i, a.number_from))
                                                        : a.output;
@@ -272,7 +277,7 @@ Action add_render(CLI::App& app) {
       ->delimiter(',')
       ->check(CLI::IsMember(kAovNames));
   cmd->add_option("--frames", a->frames, "Render frames N, FIRST:LAST or FIRST:LAST:STEP at time = frame / fps; "
-                                         "-o then needs a field such as %04d");
+                                         "-o then needs a field such as %04d (%% for a '%')");
   cmd->add_option("--fps", a->fps, "Frames per second for --frames (default 30)")
       ->check(CLI::Range(0.001, 10000.0))
       ->check(finite_number());

@@ -84,11 +84,13 @@ Action add_view(CLI::App& app) {
   cmd->add_option("--benchmark", a->benchmark,
                   "Render at full resolution for SECONDS, playing the scene's camera.path (else orbiting the "
                   "target), print frame-time statistics and exit")
-      ->check(CLI::Range(0.1, 3600.0));
+      ->check(CLI::Range(0.1, 3600.0))
+      ->check(finite_number());
   cmd->add_option("--orbit-degrees", a->orbit_degrees,
                   "How far the benchmark orbit turns in its SECONDS (default 360; 0 = camera still); "
                   "scenes with a camera.path play the path instead")
-      ->check(CLI::Range(-36000.0, 36000.0));
+      ->check(CLI::Range(-36000.0, 36000.0))
+      ->check(finite_number());
   return [a] { return run_view(*a); };
 }
 

@@ -51,12 +51,12 @@ void FarmArgs::add_to(CLI::App& cmd) {
     if (auto* o = cmd.get_option_no_throw(other)) rg->excludes(o), pt->excludes(o);
 }
 
-std::vector<int> FarmArgs::frames_of_task(const std::vector<int>& frames, bool sequence) const {
-  if (shard.empty()) return frames;
+IndexSlice FarmArgs::task_slice(std::int64_t count, bool sequence) const {
+  if (shard.empty()) return {0, count, 1};
   if (!sequence)
     throw std::invalid_argument(fmt::format("--shard {}: nothing to split; give --frames FIRST:LAST (an animation) or "
                                             "--parts N (a still)", shard));
-  return shard_items(frames, parse_shard(shard), parse_shard_mode(shard_mode));
+  return shard_slice(count, parse_shard(shard), parse_shard_mode(shard_mode));
 }
 
 bool FarmArgs::skip_done_frame(const OfflineOutput& out, int frame) const {

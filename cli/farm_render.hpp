@@ -28,9 +28,9 @@ struct FarmArgs {
   // Adds the options; call after --frames, --repeat and --keep-partial exist.
   void add_to(CLI::App& cmd);
   bool splits_still() const { return !region.empty() || parts > 0; }
-  // This task's frames of a --frames list (all of them without --shard);
-  // `sequence`: --frames was given (--shard needs it or --parts).
-  std::vector<int> frames_of_task(const std::vector<int>& frames, bool sequence = true) const;
+  // This task's share of `count` frames or parts, as indices (all of them
+  // without --shard); `sequence`: --frames was given (--shard needs it or --parts).
+  IndexSlice task_slice(std::int64_t count, bool sequence = true) const;
   // True (and says so) when the frame's image and AOVs are complete files
   // already and should be skipped (--shard or --skip-complete).
   bool skip_done_frame(const OfflineOutput& out, int frame) const;

@@ -1,7 +1,11 @@
-// Output names: frame sequences (--frames, %04d, --number-from) and the
+// Output names: frame sequences (--frames, %04d, %%, --number-from) and the
 // files beside an image (AOVs, the partial image of a stopped render).
+#include "frame_sequence.hpp"
+
 #include <fmt/format.h>
 
+#include <cctype>
+#include <climits>
 #include <filesystem>
 #include <regex>
 #include <stdexcept>
@@ -20,51 +24,91 @@ std::string partial_path(const std::string& beauty) {
   return (p.parent_path() / (p.stem().string() + ".partial" + p.extension().string())).string();
 }
 
-std::vector<int> parse_frames(const std::string& spec) {
+FrameRange parse_frames(const std::string& spec) {
   static const std::regex re(R"(^(\d+)(?::(\d+)(?::(\d+))?)?$)");
   std::smatch m;
-  if (!std::regex_match(spec, m, re))
-    throw std::invalid_argument(fmt::format("--frames '{}': expected N, FIRST:LAST or FIRST:LAST:STEP (e.g. 0:120)", spec));
+  if (spec.size() > 100 || !std::regex_match(spec, m, re))
+    throw std::invalid_argument(fmt::format("--frames '{}': expected N, FIRST:LAST or FIRST:LAST:STEP (e.g. 0:120)",
+                                            spec.substr(0, 100)));
   auto number = [&](const std::string& digits) {
-    if (digits.size() > 9) throw std::invalid_argument(fmt::format("--frames '{}': frame numbers go up to 999999999", spec));
-    return std::stoi(digits);
+    const std::size_t lead = std::min(digits.find_first_not_of('0'), digits.size());
+    if (digits.size() - lead > 10 || std::stoll(digits.substr(lead).empty() ? "0" : digits.substr(lead)) > INT_MAX)
+      throw std::invalid_argument(fmt::format("--frames '{}': frame numbers go up to {}", spec, INT_MAX));
+    return int(std::stoll(digits));
   };
-  int first = number(m[1]);
-  int last = m[2].matched ? number(m[2]) : first;
-  int step = m[3].matched ? number(m[3]) : 1;
-  if (last < first || step < 1)
+  FrameRange r;
+  r.first = number(m[1]);
+  r.last = m[2].matched ? number(m[2]) : r.first;
+  r.step = m[3].matched ? number(m[3]) : 1;
+  if (r.last < r.first || r.step < 1)
     throw std::invalid_argument(fmt::format("--frames '{}': LAST must not be before FIRST and STEP must be at least 1", spec));
-  if ((last - first) / step >= 100000) throw std::invalid_argument(fmt::format("--frames '{}': more than 100000 frames", spec));
-  std::vector<int> out;
-  for (int i = first; i <= last; i += step) out.push_back(i);
-  return out;
+  return r;
 }
 
 namespace {
-const std::regex kFrameField(R"(%(0?\d*)d)");
+
+// A name pattern split at its frame fields: "%%" is a literal '%', "%d" and
+// "%0Nd" / "%Nd" are fields, any other '%' is itself.
+struct Pattern {
+  std::string prefix, suffix;  // around the first field, with %% collapsed
+  int fields = 0;
+  std::string flags;  // of the first field: "", "04", "4", ...
+  bool too_wide = false;
+};
+
+Pattern split(const std::string& s) {
+  Pattern p;
+  std::string* text = &p.prefix;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (s[i] != '%') {
+      *text += s[i];
+      continue;
+    }
+    if (i + 1 < s.size() && s[i + 1] == '%') {
+      *text += '%';
+      ++i;
+      continue;
+    }
+    std::size_t j = i + 1;
+    while (j < s.size() && std::isdigit(static_cast<unsigned char>(s[j]))) ++j;
+    if (j >= s.size() || s[j] != 'd') {
+      *text += '%';
+      continue;
+    }
+    if (++p.fields == 1) {
+      p.flags = s.substr(i + 1, j - i - 1);
+      // %0Nd up to 99 digits wide; a wider field is a typo, not a name
+      p.too_wide = p.flags.size() > 2 && !(p.flags.size() == 3 && p.flags[0] == '0');
+      text = &p.suffix;
+    } else {
+      *text += s.substr(i, j - i + 1);
+    }
+    i = j;
+  }
+  return p;
 }
 
-bool has_frame_field(const std::string& pattern) {
-  return std::distance(std::sregex_iterator(pattern.begin(), pattern.end(), kFrameField), std::sregex_iterator()) == 1;
-}
+}  // namespace
+
+bool has_frame_field(const std::string& pattern) { return split(pattern).fields == 1; }
 
 std::string frame_path(const std::string& pattern, int frame) {
-  std::smatch m;
-  if (!has_frame_field(pattern) || !std::regex_search(pattern, m, kFrameField))
+  const Pattern p = split(pattern);
+  if (p.fields != 1)
     throw std::invalid_argument(fmt::format(
-        "-o '{}': a sequence needs one frame-number field such as %04d in the file name", pattern));
-  std::string flags = m[1];
-  if (flags.size() > 2)  // %0Nd up to 99 digits wide; a wider field is a typo, not a name
+        "-o '{}': a sequence needs one frame-number field such as %04d in the file name (write %% for a '%')",
+        pattern.substr(0, 200)));
+  if (p.too_wide)
     throw std::invalid_argument(fmt::format("-o '{}': the frame field is wider than 99 digits", pattern.substr(0, 200)));
-  int width = flags.empty() ? 0 : std::stoi(flags);
+  const int width = p.flags.empty() ? 0 : std::stoi(p.flags);
   std::string num = fmt::format("{}", frame);
-  if (static_cast<int>(num.size()) < width) num = std::string(width - num.size(), flags[0] == '0' ? '0' : ' ') + num;
-  return m.prefix().str() + num + m.suffix().str();
+  if (static_cast<int>(num.size()) < width) num = std::string(width - num.size(), p.flags[0] == '0' ? '0' : ' ') + num;
+  return p.prefix + num + p.suffix;
 }
 
-int sequence_number(const std::vector<int>& frames, std::size_t index, const std::string& number_from) {
+int sequence_number(const FrameRange& frames, std::int64_t index, const std::string& number_from) {
   if (number_from == "0") return static_cast<int>(index);
-  if (number_from == "first") return frames.front() + static_cast<int>(index);
+  if (number_from == "first") return static_cast<int>(frames.first + index);
   throw std::invalid_argument(fmt::format("--number-from '{}': expected 0 or first", number_from));
 }
 

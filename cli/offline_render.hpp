@@ -8,6 +8,7 @@
 #include <sdfrt/renderer.hpp>
 #include <sdfrt/video_writer.hpp>
 
+#include "frame_sequence.hpp"
 #include "output_format.hpp"
 
 #include <sdfrt/stream_writers.hpp>
@@ -69,20 +70,5 @@ std::vector<std::string> render_offline(sdfrt::Renderer& renderer, const Offline
 // Writes the AOVs of a whole rendered image (--repeat); returns the paths.
 std::vector<std::string> write_aovs(const sdfrt::KernelSpec& spec, const sdfrt::FloatImage& image,
                                     const std::string& beauty, const std::vector<std::string>& aovs);
-
-// Frame numbers from --frames: "N", "A:B" (inclusive) or "A:B:STEP".
-// Throws std::invalid_argument with what was expected.
-std::vector<int> parse_frames(const std::string& spec);
-
-// Expands the one printf-style integer field ("%d", "%04d") of a sequence
-// pattern; throws std::invalid_argument if there is none or more than one.
-// The number is the output frame's: see sequence_number.
-std::string frame_path(const std::string& pattern, int frame);
-bool has_frame_field(const std::string& pattern);
-
-// --number-from: "0" numbers the output frames 0, 1, 2, ...; "first" (the
-// default) FIRST, FIRST+1, ... whatever the STEP, so %04d patterns have no
-// gaps. Throws std::invalid_argument for anything else.
-int sequence_number(const std::vector<int>& frames, std::size_t index, const std::string& number_from);
 
 }  // namespace sdfc::cli

@@ -11,7 +11,6 @@
 #include <chrono>
 #include <filesystem>
 #include <iostream>
-#include <numeric>
 
 #include "farm_render.hpp"
 #include "sdfc/codegen/emit_opencl.hpp"
@@ -95,10 +94,8 @@ int render_still_parts(const StillJob& job, const FarmArgs& farm) {
   if (!has_frame_field(job.output) && farm.parts > 1)
     throw std::invalid_argument(fmt::format(
         "-o '{}': {} parts need a part-number field in the name, e.g. out/part_%03d.region", job.output, farm.parts));
-  std::vector<int> all(std::size_t(farm.parts));
-  std::iota(all.begin(), all.end(), 0);
-  const std::vector<int> mine = farm.frames_of_task(all);
-  for (int part : mine) {
+  const IndexSlice mine = farm.task_slice(farm.parts);
+  for (int part = int(mine.begin); part < mine.end; part += int(mine.stride)) {
     const Rect r = strip_region(job.width, job.height, part, farm.parts);
     const std::string path = has_frame_field(job.output) ? frame_path(job.output, part) : job.output;
     if ((!farm.shard.empty() || farm.skip_complete) && output_complete(path)) {

@@ -35,14 +35,16 @@ ShardMode parse_shard_mode(const std::string& text) {
   throw std::invalid_argument(fmt::format("--shard-mode '{}': expected contiguous or strided{}", text, hint));
 }
 
+IndexSlice shard_slice(std::int64_t n, Shard shard, ShardMode mode) {
+  const std::int64_t k = shard.index, count = shard.count;
+  if (mode == ShardMode::Strided) return {k, n, count};
+  return {k * n / count, (k + 1) * n / count, 1};
+}
+
 std::vector<int> shard_items(const std::vector<int>& items, Shard shard, ShardMode mode) {
   std::vector<int> out;
-  const std::size_t n = items.size(), k = std::size_t(shard.index), count = std::size_t(shard.count);
-  if (mode == ShardMode::Strided) {
-    for (std::size_t i = k; i < n; i += count) out.push_back(items[i]);
-  } else {
-    for (std::size_t i = k * n / count; i < (k + 1) * n / count; ++i) out.push_back(items[i]);
-  }
+  const IndexSlice s = shard_slice(std::int64_t(items.size()), shard, mode);
+  for (std::int64_t i = s.begin; i < s.end; i += s.stride) out.push_back(items[std::size_t(i)]);
   return out;
 }
 

@@ -3,6 +3,7 @@
 // N tasks (--shard k/N), full-width strips of a still (--parts), explicit
 // regions (--region), and whether a frame's files are already complete (so
 // a re-queued task resumes instead of starting over).
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -24,8 +25,18 @@ Shard parse_shard(const std::string& text);
 // "contiguous" or "strided" (did you mean for a near miss).
 ShardMode parse_shard_mode(const std::string& text);
 
-// The items of task k: contiguous gives a run of neighbouring items (sizes
-// differ by at most one), strided every N-th item from the k-th.
+// Indices begin, begin + stride, ... below end: a task's share of n items,
+// computed without listing them (a --frames range may hold 2^31 frames).
+struct IndexSlice {
+  std::int64_t begin = 0, end = 0, stride = 1;
+  std::int64_t size() const { return end > begin ? (end - begin + stride - 1) / stride : 0; }
+};
+
+// The share of task k of items 0 .. n-1: contiguous gives a run of
+// neighbouring items (sizes differ by at most one), strided every N-th item
+// from the k-th.
+IndexSlice shard_slice(std::int64_t n, Shard shard, ShardMode mode);
+// The same share of a list of items.
 std::vector<int> shard_items(const std::vector<int>& items, Shard shard, ShardMode mode);
 
 // "x0,y0,x1,y1" inside a width x height image, x1 > x0 and y1 > y0.

@@ -5,7 +5,7 @@
 inline real op_blend_cubic(real a, real b, real k)
 {
     real h = fmax(k - fabs(a - b), K(0.0f)) / k;
-    return fmin(a, b) - h * h * h * k * (1.0f / 6.0f);
+    return fmin(a, b) - h * h * h * k * (K(1.0f) / K(6.0f));  // 1/6 in the kernel's precision
 }
 
 //! fn op_blend_exponential

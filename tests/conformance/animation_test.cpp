@@ -39,6 +39,14 @@ std::vector<AnimScene> anim_scenes() {
        "scene:\n  smooth_union:\n    radius: \"0.2 + 0.15*sin(time)\"\n    children:\n"
        "      - {sphere: {radius: 0.5}, translate: [\"0.3 + 0.2*cos(time)\", 0, 0], material: m1}\n"
        "      - {box: {size: [0.6, 0.6, 0.6]}, translate: [-0.35, 0, 0], material: m2}\n"},
+      // The hg_sdf-style smooth blends (kind: cubic, exponential) take an
+      // animated radius like the polynomial one.
+      {"blend_kinds",
+       "scene:\n  union:\n"
+       "    - smooth_union: {kind: cubic, radius: \"0.2 + 0.15*sin(time)\", children: [{sphere: {radius: 0.4}, "
+       "translate: [0.25, 0.5, 0], material: m1}, {box: {size: [0.5, 0.5, 0.5]}, translate: [-0.25, 0.5, 0], material: m2}]}\n"
+       "    - smooth_difference: {kind: exponential, radius: \"0.15 + 0.1*cos(time)\", children: [{box: {size: [0.8, 0.6, "
+       "0.6]}, translate: [0, -0.5, 0]}, {sphere: {radius: 0.35}, translate: [0.3, -0.5, 0.2]}]}\n"},
       {"mandelbulb",
        "scene:\n  mandelbulb: {power: \"8 + 0.5*sin(time)\", iterations: 8, bailout: \"2 + 0.5*cos(time)\"}\n"
        "  rotate: {axis: [1, 1, 0], degrees: \"25*time\"}\n"},

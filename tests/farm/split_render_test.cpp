@@ -143,6 +143,24 @@ TEST(SplitRender, ATerminatedRenderLeavesNoPartialFile) {
   EXPECT_TRUE(leftovers(d.path()).empty());
 }
 
+// A '%' in a still's name: the job's render writes its parts where the merge
+// reads them (the parts pattern doubles the '%', the render makes it one).
+TEST(SplitRender, APercentInAStillsNameReachesThePartsTheMergeReads) {
+  ScratchDir d;
+  RunResult r = run_sdfc("farm slurm " + kLens + " --still 40x30 --parts 2 -o '" + d.file("5%%.png") + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string array = read_text(d.file("5%%.sbatch")), merge = read_text(d.file("5%%.merge.sbatch"));
+  auto normal = [&](const std::string& name) { return std::filesystem::path(d.file(name)).lexically_normal().string(); };
+  const std::string pattern = normal("5%%%%.parts/part_%03d.region");
+  EXPECT_NE(array.find("-o '" + pattern + "'"), std::string::npos) << array;
+  const std::string part0 = normal("5%%.parts/part_000.region"), part1 = normal("5%%.parts/part_001.region");
+  EXPECT_NE(merge.find("'" + part0 + "' '" + part1 + "'"), std::string::npos) << merge;
+  EXPECT_TRUE(std::filesystem::is_directory(d.file("5%%.parts")));
+  r = ok("render " + kLens + " --width 40 --height 30 --parts 2 -o '" + pattern + "'");
+  EXPECT_EQ(r.out, part0 + "\n" + part1 + "\n");
+  ok("merge '" + part0 + "' '" + part1 + "' -o " + d.file("merged.png"));
+}
+
 TEST(SplitRender, HelpAndUsageErrors) {
   for (const char* c : {"merge --help", "farm --help", "farm slurm --help"}) {
     RunResult r = run_sdfc(c);

@@ -2,6 +2,10 @@
 // is refused with a message (issue 18, classes 6, 7 and 9).
 #include <gtest/gtest.h>
 
+#include <sdfrt/image_read.hpp>
+
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <utility>
 #include <vector>
@@ -30,7 +34,7 @@ TEST(AcceptedBuilds, AOneStepHybridBuilds) {
 
 TEST(AcceptedBuilds, ScalesAndGammaWhoseInverseIsNoFloatAreRefused) {
   ScratchDir dir;
-  for (const std::string& bad : {"scene: {sphere: {radius: 1}, scale: 1e-300}\n",
+  for (const char* bad : {"scene: {sphere: {radius: 1}, scale: 1e-300}\n",
                                  "scene: {sphere: {radius: 1}, scale: [1e-39, 1, 1]}\n",
                                  "render: {gamma: 1e-300}\nscene: {sphere: {radius: 1}}\n"}) {
     SCOPED_TRACE(bad);
@@ -70,6 +74,26 @@ TEST(AcceptedBuilds, BadNumbersOnTheCommandLineAreUsageErrors) {
   }
 }
 
+// CLI::Range lets NaN through: every floating-point option of every command
+// refuses it (mesh --fps nan meshed at time NaN; render's was fixed alone).
+TEST(AcceptedBuilds, NanIsRefusedByEveryNumberOption) {
+  ScratchDir dir;
+  const std::string scene = dir.write("s.yaml", kView + "scene: {sphere: {radius: 1}}\n");
+  for (const std::string& args :
+       {"mesh " + scene + " --frames 0:1 --fps nan -o " + dir.file("m_%d.stl"), "mesh " + scene + " --iso nan -o " + dir.file("m.stl"),
+        "mesh " + scene + " --voxel nan -o " + dir.file("m.stl"), "mesh " + scene + " --adaptivity nan -o " + dir.file("m.stl"),
+        "mesh " + scene + " --memory-limit nan -o " + dir.file("m.stl"),
+        "farm slurm " + scene + " --frames 0:1 --fps nan -o " + dir.file("f_%d.png"),
+        "compare " + scene + " " + scene + " --pixel-threshold nan", "view " + scene + " --benchmark nan",
+        "view " + scene + " --orbit-degrees nan"}) {
+    SCOPED_TRACE(args);
+    RunResult r = run_sdfc(args);
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("finite"), std::string::npos) << r.err;
+  }
+  EXPECT_EQ(dir_entries(dir.path()), std::vector<std::string>{"s.yaml"}) << "nothing was written";
+}
+
 TEST(AcceptedBuilds, MaxDistanceHoldsOnTheFirstStep) {
   ScratchDir dir;
   auto image = [&](const std::string& extra_render, const std::string& where) {
@@ -87,7 +111,7 @@ TEST(AcceptedBuilds, MaxDistanceHoldsOnTheFirstStep) {
 
 TEST(AcceptedBuilds, ValuesThatRenderNothingAreRefused) {
   ScratchDir dir;
-  for (const std::string& bad : {"render: {normal_step: 1e-300}\nscene: {sphere: {radius: 1}}\n",
+  for (const char* bad : {"render: {normal_step: 1e-300}\nscene: {sphere: {radius: 1}}\n",
                                  "camera: {fov: 1e-300}\nscene: {sphere: {radius: 1}}\n",
                                  "scene: {sphere: {radius: 1}, displace: {expr: \"0.01*sin(exp(100*x))\"}}\n"}) {
     SCOPED_TRACE(bad);
@@ -99,7 +123,7 @@ TEST(AcceptedBuilds, ValuesThatRenderNothingAreRefused) {
 
 TEST(AcceptedBuilds, ScenesTheDocsCallValidAreAccepted) {
   ScratchDir dir;
-  for (const std::string& good : {
+  for (const char* good : {
            "scene: {sphere: {radius: 1}, displace: {expr: \"0.1*sin(x)*sin(x)\"}}\n",
            "scene: {link: {length: 0.5, major_radius: 0.4, minor_radius: 0.1}, displace: {expr: \"0.074*sin(2.745*z)\"}}\n",
            "scene: {quad: {a: [-0.5, -0.5, 0], b: [0.5, -0.5, 0.0001], c: [0.5, 0.5, 0], d: [-0.5, 0.5, 0.0001], "
@@ -108,6 +132,69 @@ TEST(AcceptedBuilds, ScenesTheDocsCallValidAreAccepted) {
     RunResult r = check_text(dir, good);
     EXPECT_EQ(r.code, 0) << r.err;
   }
+}
+
+// The largest difference of any channel of two PNGs of the same size.
+float max_difference(const std::string& a, const std::string& b) {
+  sdfrt::FloatImage x = sdfrt::read_png(a), y = sdfrt::read_png(b);
+  if (x.width != y.width || x.height != y.height || x.data.size() != y.data.size()) return 1e9f;
+  float d = 0;
+  for (size_t i = 0; i < x.data.size(); ++i) d = std::max(d, std::fabs(x.data[i] - y.data[i]));
+  return d;
+}
+
+// The docs allow an animated radius on every smooth blend; with kind: cubic
+// or exponential it was refused ("cannot be animated"). Frames 0 and 1 at
+// 2 fps are times 0 and 0.5, where the radius is 0.1 and 0.5 (exact in
+// float); each frame must look like the scene with that radius written as a
+// number. The animated scene's bounds are those of its largest radius, so
+// its rays start elsewhere: a fine hit epsilon makes both converge on the
+// same surface (at the default 0.5 px they differ by up to 13 levels).
+TEST(AcceptedBuilds, AnAnimatedRadiusOnACubicOrExponentialBlendRenders) {
+  ScratchDir dir;
+  auto scene = [](const std::string& kind, const std::string& radius) {
+    return "camera: {position: [0, -4, 1], target: [0, 0, 0]}\n"
+           "render: {width: 32, height: 32, hit_epsilon: 0.05, max_steps: 1000}\nscene:\n  smooth_union:\n    kind: " + kind + "\n    radius: " + radius +
+           "\n    children:\n      - {sphere: {radius: 0.6}, translate: [0.45, 0, 0]}\n"
+           "      - {sphere: {radius: 0.6}, translate: [-0.45, 0, 0.2]}\n";
+  };
+  for (const std::string kind : {"cubic", "exponential"}) {
+    SCOPED_TRACE(kind);
+    RunResult r = render_text(dir, scene(kind, "\"clamp(0.1 + 0.8*time, 0.1, 0.5)\""), "--fps 2 --frames 0:1", "a_%d.png");
+    ASSERT_EQ(r.code, 0) << r.err;
+    ASSERT_EQ(render_text(dir, scene(kind, "0.1"), "", "s_0.png").code, 0);
+    ASSERT_EQ(render_text(dir, scene(kind, "0.5"), "", "s_1.png").code, 0);
+    EXPECT_GT(max_difference(dir.file("a_0.png"), dir.file("a_1.png")), 0.1f) << "the radius did not change the image";
+    EXPECT_LE(max_difference(dir.file("a_0.png"), dir.file("s_0.png")), 2.5f / 255) << "time 0 is not radius 0.1";
+    EXPECT_LE(max_difference(dir.file("a_1.png"), dir.file("s_1.png")), 2.5f / 255) << "time 0.5 is not radius 0.5";
+  }
+}
+
+// A camera inside a solid sees no shape, and its normals are computed with
+// a step near float resolution (10 degrees off): check and render say so,
+// with the camera's position and line, and still render.
+TEST(AcceptedBuilds, ACameraInsideASolidIsWarnedAbout) {
+  ScratchDir dir;
+  const std::string inside = "render: {width: 16, height: 16}\ncamera: {position: [0.5, -0.25, 0], target: [0, 0, 0]}\n"
+                             "scene: {box: {size: [2, 2, 2]}}\n";
+  const std::string warning = "s.yaml:2:9: warning: the camera at [0.5, -0.25, 0] is inside a solid";
+  RunResult r = render_text(dir, inside);
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find(warning), std::string::npos) << r.err;
+  r = run_sdfc("check " + dir.file("s.yaml"));
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find(warning), std::string::npos) << r.err;
+  // A path key inside, at the time when an animated sphere has grown around it.
+  r = render_text(dir, "render: {width: 16, height: 16}\ncamera:\n  path:\n    keys:\n"
+                       "      - {time: 0, position: [0, -3, 0], target: [0, 0, 0]}\n"
+                       "      - {time: 2, position: [0, -1.5, 0], target: [0, 0, 0]}\n"
+                       "scene: {sphere: {radius: \"clamp(time, 0.5, 2)\"}}\n");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("s.yaml:3:3: warning: the camera at [0, -1.5, 0] (path key at time 2) is inside"), std::string::npos)
+      << r.err;
+  r = render_text(dir, kView + "scene: {box: {size: [2, 2, 2]}}\n");  // outside: nothing to say
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
 }
 
 TEST(AcceptedBuilds, YamlTheFormatDoesNotHaveIsRefused) {

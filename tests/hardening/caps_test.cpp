@@ -161,10 +161,13 @@ TEST(Caps, PfmHeadersAreCheckedAgainstTheFileSize) {
   RunResult r = run_sdfc("compare " + dir.file("a.png") + " " + dir.file("b.png"), kMemoryLimit);
   EXPECT_EQ(r.code, 4) << r.err;
   EXPECT_NE(r.err.find("truncated (the header says 65536x65536)"), std::string::npos) << r.err;
-  dir.write("a.depth.pfm", "Pf\n8 8\n0\n" + std::string(256, '\0'));
-  r = run_sdfc("compare " + dir.file("a.png") + " " + dir.file("b.png"));
-  EXPECT_EQ(r.code, 4) << r.err;
-  EXPECT_NE(r.err.find("non-zero"), std::string::npos) << r.err;
+  for (const char* scale : {"0", "nan", "-nan"}) {  // no byte order: once read as big-endian
+    SCOPED_TRACE(scale);
+    dir.write("a.depth.pfm", "Pf\n8 8\n" + std::string(scale) + "\n" + std::string(256, '\0'));
+    r = run_sdfc("compare " + dir.file("a.png") + " " + dir.file("b.png"));
+    EXPECT_EQ(r.code, 4) << r.err;
+    EXPECT_NE(r.err.find("non-zero"), std::string::npos) << r.err;
+  }
 }
 
 // A render against itself has no normal error (acos of a rounded dot

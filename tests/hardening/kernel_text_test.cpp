@@ -100,6 +100,20 @@ TEST(KernelText, KernelsOfHostileNamesArePlainAscii) {
   }
 }
 
+// Expression text (animated values, displace) is parsed and written out
+// again by sdfc: line breaks, tabs and spacing in it never reach the kernel.
+TEST(KernelText, ExpressionsAreRewrittenNotCopied) {
+  ir::Module m = compile_text(
+      "scene: {sphere: {radius: \"0.4 +\\r\\n 0.1*sin(time)\\t\"}, displace: {expr: \"0.01*sin(\\n8*x)  \\r\"}}\n");
+  std::string src = codegen::emit_opencl(m).source;
+  EXPECT_TRUE(codegen::kernel_source_is_plain(src));
+  EXPECT_NE(src.find("radius=\"(0.4 + (0.1 * sin(time)))\""), std::string::npos) << "the comment holds sdfc's own text";
+  EXPECT_NE(src.find("// displace (0.01 * sin((8 * x)))"), std::string::npos);
+  // A backslash or a comment in an expression is no expression.
+  for (const char* bad : {"0.4 + 0.1*sin(time)\\\\", "0.4 // x"})
+    EXPECT_THROW(compile_text(std::string("scene: {sphere: {radius: \"") + bad + "\"}}\n"), SceneError) << bad;
+}
+
 TEST(KernelText, HostileMaterialNamesRenderLikePlainOnes) {
   ScratchDir dir;
   std::string plain = render(dir, dir.write("plain.yaml", scene_with_names(plain_names(kHostileYaml.size()))));

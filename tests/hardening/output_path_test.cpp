@@ -5,9 +5,13 @@
 // succeed: they use device nodes of their own (mknod), never /dev's.
 #include <gtest/gtest.h>
 
+#include <sys/socket.h>
 #include <sys/stat.h>
 #include <sys/sysmacros.h>
+#include <sys/un.h>
 #include <unistd.h>
+
+#include <cstdio>
 
 #include <chrono>
 #include <csignal>
@@ -95,6 +99,32 @@ TEST(OutputPaths, AnOutputOntoAnInputIsRefused) {
     EXPECT_NE(r.err.find("input"), std::string::npos) << r.err;
     EXPECT_EQ(read_text(scene), kScene) << "the scene was overwritten";
   }
+}
+
+// Only files, devices and pipes are written: a directory or a socket is an
+// output problem (exit 4), and stays what it was.
+TEST(OutputPaths, ADirectoryOrASocketIsRefused) {
+  ScratchDir dir;
+  std::string scene = dir.write("s.yaml", kScene);
+  fs::create_directory(dir.file("d"));
+  int sock = ::socket(AF_UNIX, SOCK_STREAM, 0);
+  ASSERT_GE(sock, 0);
+  sockaddr_un addr{};
+  addr.sun_family = AF_UNIX;
+  const std::string sock_path = dir.file("sock");
+  ASSERT_LT(sock_path.size(), sizeof addr.sun_path);
+  std::snprintf(addr.sun_path, sizeof addr.sun_path, "%s", sock_path.c_str());
+  ASSERT_EQ(::bind(sock, reinterpret_cast<sockaddr*>(&addr), sizeof addr), 0);
+  for (const std::string& target : {dir.file("d"), sock_path})
+    for (const char* cmd : {"render --format png -q", "compile"}) {
+      SCOPED_TRACE(std::string(cmd) + " -o " + target);
+      RunResult r = run_sdfc(std::string(cmd) + " " + scene + " -o " + target);
+      EXPECT_EQ(r.code, 4) << r.err;
+      EXPECT_NE(r.err.find(target == sock_path ? "it is a socket" : "it is a directory"), std::string::npos) << r.err;
+    }
+  ::close(sock);
+  EXPECT_TRUE(fs::is_directory(dir.file("d")));
+  EXPECT_TRUE(fs::is_socket(fs::symlink_status(sock_path)));
 }
 
 TEST(OutputPaths, StaleTempFilesOfDeadRunsAreRemoved) {

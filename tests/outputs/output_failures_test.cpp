@@ -3,13 +3,11 @@
 // full disk, a stopped video.
 #include <gtest/gtest.h>
 #include <signal.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
-#include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "run_sdfc.hpp"
@@ -18,13 +16,7 @@ namespace {
 
 using sdfc::test::RunResult;
 using sdfc::test::ScratchDir;
-
-std::vector<std::string> entries(const std::string& dir) {
-  std::vector<std::string> v;
-  for (const auto& e : std::filesystem::directory_iterator(dir)) v.push_back(e.path().filename().string());
-  std::sort(v.begin(), v.end());
-  return v;
-}
+using sdfc::test::dir_entries;
 
 TEST(OutputFailures, AnUnknownExtensionListsTheSupportedOnes) {
   ScratchDir dir;
@@ -32,10 +24,10 @@ TEST(OutputFailures, AnUnknownExtensionListsTheSupportedOnes) {
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_NE(r.err.find("unknown file type '.tif'"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find(".png, .exr, .pfm, .jpg (.jpeg), .mp4, .mkv and .webm"), std::string::npos) << r.err;
-  EXPECT_TRUE(entries(dir.path()).empty());
+  EXPECT_TRUE(dir_entries(dir.path()).empty());
   r = sdfc::test::run_sdfc("render examples/primitives.yaml --width 32 --height 16 -q --format png -o " + dir.file("x.tif"));
   EXPECT_EQ(r.code, 0) << "--format names the format: " << r.err;
-  EXPECT_EQ(entries(dir.path()), std::vector<std::string>{"x.tif"});
+  EXPECT_EQ(dir_entries(dir.path()), std::vector<std::string>{"x.tif"});
 }
 
 TEST(OutputFailures, ChoicesAFormatCannotTakeAreUsageErrors) {
@@ -55,7 +47,7 @@ TEST(OutputFailures, ChoicesAFormatCannotTakeAreUsageErrors) {
     RunResult r = sdfc::test::run_sdfc(base + dir.file(args));
     EXPECT_EQ(r.code, 2) << args << ": " << r.err;
     EXPECT_NE(r.err.find(message), std::string::npos) << args << ": " << r.err;
-    EXPECT_TRUE(entries(dir.path()).empty()) << args;
+    EXPECT_TRUE(dir_entries(dir.path()).empty()) << args;
   }
 }
 
@@ -66,7 +58,7 @@ TEST(OutputFailures, AnUnwritablePathExitsFourForEveryFormat) {
                                        dir.file(std::string("missing/") + name));
     EXPECT_EQ(r.code, 4) << name << ": " << r.err;
     EXPECT_NE(r.err.find("No such file or directory"), std::string::npos) << name << ": " << r.err;
-    EXPECT_TRUE(entries(dir.path()).empty()) << name;
+    EXPECT_TRUE(dir_entries(dir.path()).empty()) << name;
   }
 }
 
@@ -82,7 +74,7 @@ TEST(OutputFailures, AFullDiskLeavesNoFileForExrAndMp4) {
     RunResult r = sdfc::test::run_sdfc("render examples/animated.yaml --width 320 --height 200 -q " + a);
     EXPECT_EQ(r.code, 4) << args << ": " << r.err;
     EXPECT_NE(r.err.find("No space left on device"), std::string::npos) << args << ": " << r.err;
-    EXPECT_TRUE(entries(dir.path()).empty()) << args << ": no temp file left";
+    EXPECT_TRUE(dir_entries(dir.path()).empty()) << args << ": no temp file left";
   }
   EXPECT_EQ(std::system(("umount " + dir.path()).c_str()), 0);
 }
@@ -90,31 +82,16 @@ TEST(OutputFailures, AFullDiskLeavesNoFileForExrAndMp4) {
 // Ctrl-C in the middle of a video: nothing, or with --keep-partial a
 // playable file of the frames done.
 int interrupt_video(const ScratchDir& dir, const std::string& extra, std::string* err) {
-  const std::string err_path = dir.file("stderr");
-  std::filesystem::remove(err_path);  // the readiness wait reads it
-  std::vector<std::string> args = {SDFC_BINARY, "render", "examples/animated.yaml", "--width", "320", "--height",
+  std::vector<std::string> args = {"render", "examples/animated.yaml", "--width", "320", "--height",
                                    "192", "--frames", "0:39", "-o", dir.file("v.mp4")};
   if (!extra.empty()) args.push_back(extra);
-  pid_t pid = fork();
-  if (pid == 0) {
-    if (chdir(SDFC_SOURCE_DIR) != 0) _exit(120);
-    if (!freopen(err_path.c_str(), "w", stderr)) _exit(122);
-    std::vector<char*> argv;
-    for (auto& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    execv(argv[0], argv.data());
-    _exit(121);
-  }
+  sdfc::test::SdfcProcess sdfc(args, dir.file("stderr"));
   // Readiness wait, not a timing assertion: a few frames are done.
-  auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(3);
-  while (sdfc::test::read_text(err_path).find("/40 frames") == std::string::npos &&
-         std::chrono::steady_clock::now() < deadline)
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  kill(pid, SIGINT);
-  int st = 0;
-  waitpid(pid, &st, 0);
-  *err = sdfc::test::read_text(err_path);
-  return WIFEXITED(st) ? WEXITSTATUS(st) : 128 + WTERMSIG(st);
+  sdfc.wait_until([&] { return sdfc.stderr_text().find("/40 frames") != std::string::npos; });
+  sdfc.signal(SIGINT);
+  int code = sdfc.wait();
+  *err = sdfc.stderr_text();
+  return code;
 }
 
 TEST(OutputFailures, CtrlCDuringAVideoLeavesNothingUnlessAskedToKeepIt) {
@@ -122,10 +99,10 @@ TEST(OutputFailures, CtrlCDuringAVideoLeavesNothingUnlessAskedToKeepIt) {
   std::string err;
   EXPECT_EQ(interrupt_video(dir, "", &err), 130) << err;
   EXPECT_NE(err.find("v.mp4 was not written"), std::string::npos) << err;
-  EXPECT_EQ(entries(dir.path()), std::vector<std::string>{"stderr"}) << "no temp file";
+  EXPECT_EQ(dir_entries(dir.path()), std::vector<std::string>{"stderr"}) << "no temp file";
   EXPECT_EQ(interrupt_video(dir, "--keep-partial", &err), 130) << err;
   EXPECT_NE(err.find("partial video"), std::string::npos) << err;
-  EXPECT_EQ(entries(dir.path()), (std::vector<std::string>{"stderr", "v.partial.mp4"}));
+  EXPECT_EQ(dir_entries(dir.path()), (std::vector<std::string>{"stderr", "v.partial.mp4"}));
   EXPECT_GT(std::filesystem::file_size(dir.file("v.partial.mp4")), 1000u);
 }
 

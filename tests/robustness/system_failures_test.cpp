@@ -1,10 +1,8 @@
 // Device and system failures as a user meets them through the sdfc binary:
 // no OpenCL platform, an unknown device, a kernel that does not build, an
 // unwritable output, a full disk, Ctrl-C during a render.
-#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -22,14 +20,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Only the named entries remain in `dir` (no temp files left behind).
-std::vector<std::string> entries(const std::string& dir) {
-  std::vector<std::string> names;
-  for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
 void expect_no_exception_text(const RunResult& r) {
   for (const char* bad : {"terminate called", "what():", "internal error", "Sanitizer"})
     EXPECT_EQ(r.err.find(bad), std::string::npos) << r.err;
@@ -44,7 +34,7 @@ TEST(SystemFailures, NoOpenCLPlatformExitsThreeWithAHint) {
   EXPECT_NE(r.err.find("no OpenCL platform"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("pocl-opencl-icd"), std::string::npos) << "should say what to install: " << r.err;
   EXPECT_EQ(r.err.find("CL_"), std::string::npos) << "no OpenCL error code: " << r.err;
-  EXPECT_TRUE(entries(out.path()).empty());
+  EXPECT_TRUE(dir_entries(out.path()).empty());
   expect_no_exception_text(r);
 
   RunResult d = run_sdfc("devices", env);
@@ -81,7 +71,7 @@ TEST(SystemFailures, DeviceIdsThatDoNotExistExitThree) {
     EXPECT_NE(r.err.find("Available devices:\n  0:0"), std::string::npos) << r.err;
     expect_no_exception_text(r);
   }
-  EXPECT_TRUE(entries(dir.path()).empty());
+  EXPECT_TRUE(dir_entries(dir.path()).empty());
 }
 
 TEST(SystemFailures, KernelBuildFailureShowsTheLogAndTheKernelLines) {
@@ -116,7 +106,7 @@ TEST(SystemFailures, OutputIntoAFileAsDirectoryExitsFour) {
   RunResult r = run_sdfc("render examples/primitives.yaml --width 32 --height 18 -q -o " + dir.file("plain/p.png"));
   EXPECT_EQ(r.code, 4) << r.err;
   EXPECT_NE(r.err.find(dir.file("plain/p.png")), std::string::npos) << "names the path: " << r.err;
-  EXPECT_EQ(entries(dir.path()), std::vector<std::string>{"plain"});
+  EXPECT_EQ(dir_entries(dir.path()), std::vector<std::string>{"plain"});
   expect_no_exception_text(r);
 }
 
@@ -127,7 +117,7 @@ TEST(SystemFailures, FileSizeLimitExitsFourLeavingNoFileAndTheOldOneIntact) {
   RunResult r = run_sdfc("compile examples/primitives.yaml -o " + dir.file("k.cl"), "ulimit -f 4; ");
   EXPECT_EQ(r.code, 4) << r.err;
   EXPECT_NE(r.err.find("too large"), std::string::npos) << "strerror(EFBIG): " << r.err;
-  EXPECT_EQ(entries(dir.path()), std::vector<std::string>{"k.cl"}) << "no temp file left";
+  EXPECT_EQ(dir_entries(dir.path()), std::vector<std::string>{"k.cl"}) << "no temp file left";
   EXPECT_EQ(read_text(dir.file("k.cl")), "the previous kernel");
   expect_no_exception_text(r);
 }
@@ -142,7 +132,7 @@ TEST(SystemFailures, FullDiskExitsFourLeavingNoFileAndTheOldImageIntact) {
   EXPECT_EQ(r.code, 4) << r.err;
   EXPECT_NE(r.err.find("No space left on device"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find(dir.file("p.png")), std::string::npos) << "names the path: " << r.err;
-  EXPECT_EQ(entries(dir.path()), std::vector<std::string>{"p.png"}) << "no temp file left";
+  EXPECT_EQ(dir_entries(dir.path()), std::vector<std::string>{"p.png"}) << "no temp file left";
   EXPECT_EQ(read_text(dir.file("p.png")), "the previous image");
   expect_no_exception_text(r);
   EXPECT_EQ(std::system(("umount " + dir.path()).c_str()), 0);
@@ -163,7 +153,7 @@ TEST(SystemFailures, FullDiskDuringTheDriversKernelBuildIsExplained) {
     EXPECT_NE(r.err.find("the OpenCL driver aborted"), std::string::npos) << r.err;
   }
   EXPECT_NE(r.err.find("full disk or"), std::string::npos) << r.err;
-  EXPECT_TRUE(entries(dir.path()).empty());
+  EXPECT_TRUE(dir_entries(dir.path()).empty());
 }
 
 struct Interrupted {
@@ -185,42 +175,23 @@ int tiles_done(const std::string& err) {
 // SIGINT (what Ctrl-C does) and returns how it ended.
 Interrupted render_and_interrupt(const ScratchDir& dir, const std::vector<std::string>& extra, int side = 2048,
                                  int min_tiles = 0, int signal = SIGINT, int tile = 32) {
-  std::string err_path = dir.file("stderr");
-  std::string out_png = dir.file("big.png");
-  std::vector<std::string> args = {SDFC_BINARY, "render", "examples/mandelbulb.yaml", "--width", std::to_string(side),
-                                   "--height", std::to_string(side), "--tile", std::to_string(tile), "-o", out_png};
+  std::vector<std::string> args = {"render", "examples/mandelbulb.yaml", "--width", std::to_string(side),
+                                   "--height", std::to_string(side), "--tile", std::to_string(tile), "-o", dir.file("big.png")};
   args.insert(args.end(), extra.begin(), extra.end());
-  pid_t pid = fork();
-  if (pid == 0) {
-    if (chdir(SDFC_SOURCE_DIR) != 0) _exit(120);
-    int fd = open(err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    dup2(fd, 2);
-    std::vector<char*> argv;
-    for (auto& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    execv(argv[0], argv.data());
-    _exit(121);
-  }
+  SdfcProcess sdfc(args, dir.file("stderr"));
   // Readiness wait, not a timing assertion: the progress lines appear once
   // the kernel is built and tiles are done.
-  auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(3);
   // min_tiles < 0: wait for the kernel build, then a second into the first tile.
-  auto ready = [&] {
-    std::string err = read_text(err_path);
+  const bool ready = sdfc.wait_until([&] {
+    std::string err = sdfc.stderr_text();
     return min_tiles < 0 ? err.find("kernel built") != std::string::npos : tiles_done(err) > min_tiles;
-  };
-  while (!ready() && std::chrono::steady_clock::now() < deadline) {
-    int st = 0;
-    if (waitpid(pid, &st, WNOHANG) == pid) return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, read_text(err_path)};
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  if (min_tiles < 0) std::this_thread::sleep_for(std::chrono::seconds(1));
+  });
+  if (ready && min_tiles < 0) std::this_thread::sleep_for(std::chrono::seconds(1));
   auto signalled = std::chrono::steady_clock::now();
-  kill(pid, signal);
-  int st = 0;
-  waitpid(pid, &st, 0);
+  sdfc.signal(signal);  // nothing when it ended early: its exit code says how
+  int code = sdfc.wait();
   double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - signalled).count();
-  return {WIFEXITED(st) ? WEXITSTATUS(st) : 128 + WTERMSIG(st), read_text(err_path), ms};
+  return {code, sdfc.stderr_text(), ms};
 }
 
 // Rows of an image that are all black, and rows with some light.
@@ -245,7 +216,7 @@ TEST(SystemFailures, CtrlCLeavesTheFinalNameUntouched) {
   EXPECT_NE(r.err.find("sdfc: cancelled"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("big.png was not written"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("--keep-partial"), std::string::npos) << "says how to keep the tiles: " << r.err;
-  EXPECT_EQ(entries(dir.path()), (std::vector<std::string>{"big.png", "stderr"})) << "no temp or partial file";
+  EXPECT_EQ(dir_entries(dir.path()), (std::vector<std::string>{"big.png", "stderr"})) << "no temp or partial file";
   EXPECT_EQ(read_text(dir.file("big.png")), "the previous image");
 }
 
@@ -267,7 +238,7 @@ TEST(SystemFailures, SigkillLeavesNoTempFile) {
   ScratchDir dir;
   Interrupted r = render_and_interrupt(dir, {}, 2048, 8, SIGKILL);
   EXPECT_EQ(r.code, 128 + SIGKILL) << r.err;
-  EXPECT_EQ(entries(dir.path()), (std::vector<std::string>{"stderr"})) << "no temp file left";
+  EXPECT_EQ(dir_entries(dir.path()), (std::vector<std::string>{"stderr"})) << "no temp file left";
 }
 
 TEST(SystemFailures, CtrlCWithKeepPartialWritesTheTilesDoneToAPartialFile) {
@@ -275,7 +246,7 @@ TEST(SystemFailures, CtrlCWithKeepPartialWritesTheTilesDoneToAPartialFile) {
   Interrupted r = render_and_interrupt(dir, {"--keep-partial"});
   EXPECT_EQ(r.code, 130) << r.err;
   EXPECT_NE(r.err.find("partial image: " + dir.file("big.partial.png")), std::string::npos) << r.err;
-  EXPECT_EQ(entries(dir.path()), (std::vector<std::string>{"big.partial.png", "stderr"})) << "never big.png";
+  EXPECT_EQ(dir_entries(dir.path()), (std::vector<std::string>{"big.partial.png", "stderr"})) << "never big.png";
   // A whole image of the full size: rendered rows at the top, black below.
   sdfrt::FloatImage img = sdfrt::read_png(dir.file("big.partial.png"));
   EXPECT_EQ(img.width, 2048);
@@ -294,7 +265,7 @@ TEST(SystemFailures, CtrlCWithKeepPartialDuringSamplePassesKeepsTheMeanSoFar) {
   EXPECT_NE(r.err.find("partial image: " + dir.file("big.partial.png")), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("stopped in pass"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("stopped in pass 1 "), std::string::npos) << r.err;
-  EXPECT_EQ(entries(dir.path()), (std::vector<std::string>{"big.partial.png", "stderr"})) << "never big.png";
+  EXPECT_EQ(dir_entries(dir.path()), (std::vector<std::string>{"big.partial.png", "stderr"})) << "never big.png";
   sdfrt::FloatImage img = sdfrt::read_png(dir.file("big.partial.png"));
   EXPECT_EQ(img.width, 512);
   EXPECT_EQ(img.height, 512);
@@ -307,7 +278,7 @@ TEST(SystemFailures, AFinishedRenderWithKeepPartialLeavesNoPartialFile) {
   RunResult r = run_sdfc("render examples/primitives.yaml --width 64 --height 40 -q --keep-partial -o " +
                          dir.file("p.png"));
   EXPECT_EQ(r.code, 0) << r.err;
-  EXPECT_EQ(entries(dir.path()), std::vector<std::string>{"p.png"});
+  EXPECT_EQ(dir_entries(dir.path()), std::vector<std::string>{"p.png"});
 }
 
 }  // namespace

@@ -419,7 +419,7 @@ class SceneEmitter {
     }
     bool poly = n.kind == Kind::SmoothUnion || n.kind == Kind::SmoothIntersection || n.kind == Kind::SmoothDifference;
     std::string fn = poly ? "op_weight_polynomial" : n.params[0] == 0 ? "op_weight_cubic" : "op_weight_exponential";
-    std::string radius = lit_.typed(poly ? n.params[0] : n.params[1]);
+    std::string radius = "(real)(" + param(n, poly ? 0 : 1, lit_) + ")";  // may be animated
     std::string a = uni ? d : "-" + d, b = inter ? "-" + k.d : k.d;
     w_.line(fmt::format("{} = mat_mix({}, {}, {}({}, {}, {}));  // blend weight", rec, rec, k.rec, call(fn), a, b, radius));
   }
@@ -430,7 +430,7 @@ class SceneEmitter {
                                 "op_blend_round", "op_blend_columns",     "op_blend_stairs"};
     int style = int(n.params[0]);
     std::string steps = style >= 4 ? ", " + lit_.typed(n.params[2]) : "";
-    return fmt::format("{}({}, {}, {}{})", call(fns[style]), a, b, lit_.typed(n.params[1]), steps);
+    return fmt::format("{}({}, {}, (real)({}){})", call(fns[style]), a, b, param(n, 1, lit_), steps);  // radius may be animated
   }
 
   // repeat: the child in the point's own cell and in the neighbouring cell on

@@ -133,10 +133,10 @@ std::optional<NodeId> lower_blend(ValueReader& r, const SourceValue& key, const 
     std::string style = r.word(*kind, k + ".kind", {"polynomial", "cubic", "exponential"});
     if (style == "polynomial") return std::nullopt;
     MapReader m(r, body, k, {"radius", "kind", "children"});
-    double radius = m.require("radius") ? m.number("radius", 0.1, Range::positive()) : 0.1;
+    Param radius = m.require("radius") ? m.param("radius", 0.1, Range::positive()) : Param(0.1);  // may be animated
     const SourceValue* kids = m.require("children");
     if (!kids) return ir::kNoNode;
-    return children(op_of(k.substr(7)), *kids, {style == "cubic" ? 0.0 : 1.0, radius, 1});
+    return children(op_of(k.substr(7)), *kids, {Param(style == "cubic" ? 0.0 : 1.0), radius, Param(1)});
   }
   size_t cut = k.find('_');
   if (cut == std::string::npos) return std::nullopt;
@@ -150,7 +150,7 @@ std::optional<NodeId> lower_blend(ValueReader& r, const SourceValue& key, const 
   int steps = stepped ? m.integer("steps", 4, 1, 1000) : 1;
   const SourceValue* kids = m.require("children");
   if (!kids) return ir::kNoNode;
-  return children(op_of(op), *kids, {index, radius, double(steps)});
+  return children(op_of(op), *kids, {Param(index), Param(radius), Param(double(steps))});
 }
 
 }  // namespace sdfc::frontend

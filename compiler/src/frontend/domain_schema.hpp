@@ -17,8 +17,9 @@ const std::vector<std::string_view>& domain_modifiers();
 ir::NodeId apply_domain_modifiers(ValueReader& r, ir::Builder& b, const SourceValue& node, ir::NodeId n);
 
 const std::vector<std::string_view>& blend_kinds();
-// Lowers `children` of `body` into `kind` with `params`.
-using ChildLowering = std::function<ir::NodeId(ir::Kind, const SourceValue& list, std::vector<double> params)>;
+// Lowers `children` of `body` into `kind` with `params` (a smooth blend's
+// radius may be animated).
+using ChildLowering = std::function<ir::NodeId(ir::Kind, const SourceValue& list, std::vector<Param> params)>;
 // A blend node (kNoNode after an error), or nullopt when key names no blend
 // handled here; smooth_* with kind: polynomial is left to the caller.
 std::optional<ir::NodeId> lower_blend(ValueReader& r, const SourceValue& key, const SourceValue& body,

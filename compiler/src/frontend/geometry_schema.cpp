@@ -174,8 +174,8 @@ NodeId GeometryLowering::lower_kind(const SourceValue& key, const SourceValue& b
   const SourceLoc& at = key.loc;
   std::string what = k;
   // Blends other than the polynomial smooth ones (domain_schema.cpp).
-  auto kids_of = [&](Kind kind, const SourceValue& list, std::vector<double> params) {
-    return lower_children(kind, key, list, std::vector<Param>(params.begin(), params.end()));
+  auto kids_of = [&](Kind kind, const SourceValue& list, std::vector<Param> params) {
+    return lower_children(kind, key, list, std::move(params));
   };
   if (auto n = lower_blend(r_, key, body, kids_of)) return *n;
   // Combinators.
