@@ -10,6 +10,7 @@
 #include "cli_support.hpp"
 #include "sdfc/scene_caps.hpp"
 #include "commands.hpp"
+#include "sdfc/codegen/camera_view.hpp"
 #include "sdfc/compile.hpp"
 #include "sdfc/ir/printer.hpp"
 
@@ -21,6 +22,20 @@ std::string box_text(const ir::Box3& b) {
   if (!b.finite()) return "unbounded";
   return fmt::format("[{:.3g}, {:.3g}, {:.3g}] .. [{:.3g}, {:.3g}, {:.3g}]", b.lo[0], b.lo[1], b.lo[2], b.hi[0],
                      b.hi[1], b.hi[2]);
+}
+
+// camera.fit: the box it frames and where that puts the camera.
+void print_fit(const ir::RenderPlan& plan) {
+  const ir::Camera& c = plan.camera;
+  if (!c.fit) return;
+  if (!c.has_fit_box) {
+    fmt::print("  camera fit: the scene has no bounded part to frame; the camera stays where it is\n");
+    return;
+  }
+  const ir::Camera f = codegen::fitted(c, plan.march.width, plan.march.height);
+  fmt::print("  camera fit: frames {} at {}x{}: position [{:.4g}, {:.4g}, {:.4g}], target [{:.4g}, {:.4g}, {:.4g}]\n",
+             box_text({c.fit_lo, c.fit_hi}), plan.march.width, plan.march.height, f.position[0], f.position[1],
+             f.position[2], f.target[0], f.target[1], f.target[2]);
 }
 
 int run_check(const SceneArgs& args) {
@@ -36,6 +51,7 @@ int run_check(const SceneArgs& args) {
   fmt::print("geometry: {} IR nodes ({} as written), class {}, L = {}, cost ~{:.0f}\n", ir::count_nodes(m),
              lowered_nodes, ir::to_string(root.cls), root.lipschitz, root.cost);
   fmt::print("  bounds {}\n", box_text(root.bounds));
+  print_fit(m.plan);
   fmt::print("  work per sample ~{:.3g} (limit {:.3g}, see docs/security.md)\n", estimated_cost_per_sample(m),
              scene_caps().max_cost_per_sample);
   // Every node with its class and Lipschitz constant, and where the kernel

@@ -61,14 +61,12 @@ struct RenderArgs {
   std::string output;
   int width = 0, height = 0;
   int samples = 0;  // --samples: overrides render.samples
-  bool verbose = false;
+  bool verbose = false, fit = false;
   std::string device;
   int simd_width = 0;
   int packet_rows = 0;
-  int tile = 256;
-  int repeat = 0;
-  bool quiet = false;
-  bool keep_partial = false;
+  int tile = 256, repeat = 0;
+  bool quiet = false, keep_partial = false;
   int bit_depth = 0;  // the format's default
   std::string format;
   int quality = -1;
@@ -111,6 +109,7 @@ int run_render(RenderArgs a) {
   if (a.width > 0) a.scene.sets.push_back(fmt::format("render.width={}", a.width));
   if (a.height > 0) a.scene.sets.push_back(fmt::format("render.height={}", a.height));
   if (a.samples > 0) a.scene.sets.push_back(fmt::format("render.samples={}", a.samples));
+  if (a.fit) a.scene.sets.push_back("camera.fit=true");
   SourceValue doc = load_scene_source(a.scene.path, a.scene.sets);
   ir::Module m = build_module(doc, a.scene.path);
   warn_if_camera_inside(m, a.scene.path);
@@ -125,6 +124,8 @@ int run_render(RenderArgs a) {
   if (is_video(format) && !a.farm.shard.empty())
     throw std::invalid_argument("--shard splits a frame sequence or a still's parts, not a video: render image frames");
   if (a.repeat > 0 && format != Format::Png) throw std::invalid_argument("--repeat writes a PNG: name the output .png");
+  // A range, never a list: --frames 0:2147483647 costs no memory; refused before the build.
+  const FrameRange frames = a.frames.empty() ? FrameRange{} : parse_frames(a.frames);
   if (is_video(format) && (m.plan.march.width % 2 || m.plan.march.height % 2))
     throw std::invalid_argument(fmt::format("a video needs an even width and height (yuv420p), not {}x{}",
                                             m.plan.march.width, m.plan.march.height));
@@ -161,8 +162,6 @@ int run_render(RenderArgs a) {
   std::signal(SIGTERM, on_sigint);  // a farm's scheduler stops a task so: temp files go, no partial image
   if (a.repeat > 0) return render_repeated({&renderer, &m.plan, a.tile, a.repeat, a.output, a.aovs, &g_cancel});
 
-  // A range, never a list: --frames 0:2147483647 costs no memory.
-  const FrameRange frames = a.frames.empty() ? FrameRange{} : parse_frames(a.frames);
   const bool sequence = !a.frames.empty();
   if (frames.back() / a.fps > expr::kMaxTime)  // animated values are checked for t in [0, kMaxTime] only
     throw std::invalid_argument(fmt::format("--frames: frame {} is at t = {:.3g} s at {} fps, past the {:g} s over which "
@@ -254,6 +253,7 @@ Action add_render(CLI::App& app) {
   cmd->add_option("--width", a->width, "Image width (overrides render.width)")->check(CLI::Range(1, 16384));
   cmd->add_option("--height", a->height, "Image height (overrides render.height)")->check(CLI::Range(1, 16384));
   cmd->add_option("--samples", a->samples, "Samples per pixel (overrides render.samples)")->check(CLI::Range(1, 1024));
+  cmd->add_flag("--fit", a->fit, "Place the camera so the scene fills the frame, looking the way it looks (as camera.fit: true)");
   cmd->add_flag("--verbose", a->verbose, "Also print the kernel's build time and its packet shape (pixels per work-item)");
   cmd->add_option("--device", a->device, "Device id from 'sdfc devices' (P:D, an index or part of the name); "
                                          "default: $SDFC_DEVICE, else the first CPU device");

@@ -1,5 +1,6 @@
 // The command line's own words: --version, suggestions for a mistyped
-// command or option, plain progress unless --verbose, --samples.
+// command or option, plain progress unless --verbose, --samples, --frames
+// checked first, --fit.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -40,6 +41,27 @@ TEST(CliWords, RenderSpeaksPlainlyUnlessVerbose) {
   ASSERT_EQ(verbose.code, 0) << verbose.err;
   EXPECT_NE(verbose.err.find("pixel(s) per work-item"), std::string::npos) << verbose.err;
   EXPECT_EQ(run_sdfc("render examples/primitives.yaml --samples 0 -o " + out).code, 2);
+}
+
+TEST(CliWords, BadFramesAreRefusedBeforeTheKernelBuilds) {
+  // OCL_ICD_VENDORS pointing nowhere: had render opened a device, it would
+  // fail with a device error (exit 3) instead of the usage message.
+  for (const char* frames : {"abc", "5:2", "0:10:0"}) {
+    auto r = run_sdfc(std::string("render examples/primitives.yaml -o x.png --frames ") + frames,
+                      "OCL_ICD_VENDORS=/nonexistent ");
+    EXPECT_NE(r.err.find("--frames"), std::string::npos) << frames << ": " << r.err;
+    EXPECT_EQ(r.err.find("rendering on"), std::string::npos) << frames << ": " << r.err;
+    EXPECT_NE(r.code, 3) << frames << ": " << r.err;
+  }
+}
+
+TEST(CliWords, FitIsAnOptionOfRenderAndCheckPrintsWhereTheCameraGoes) {
+  auto r = run_sdfc("check examples/kifs.yaml --set camera.fit=true");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("camera fit: frames ["), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("position ["), std::string::npos) << r.out;
+  auto help = run_sdfc("render --help");
+  EXPECT_NE(help.out.find("--fit"), std::string::npos) << help.out;
 }
 
 }  // namespace

@@ -22,10 +22,13 @@ CameraRays::CameraRays(const ir::Camera& cam, int w, int h) : width(w), height(h
   fw_ = normalize(sub(cam.target, cam.position));
   right_ = normalize(cross(fw_, cam.up));
   up_ = cross(right_, fw_);
+  // fov spans the height, the width (horizontal), or the longer side (auto).
   double tan_half = std::tan(cam.fov_degrees * std::numbers::pi / 360.0);
-  right_ = mul(right_, tan_half * double(w) / double(h));
-  up_ = mul(up_, tan_half);
-  pixel_angle = 2 * tan_half / h;
+  bool across = cam.fov_axis == ir::Camera::FovAxis::Horizontal || (cam.fov_axis == ir::Camera::FovAxis::Auto && w > h);
+  double tan_y = across ? tan_half * double(h) / double(w) : tan_half;
+  right_ = mul(right_, tan_y * double(w) / double(h));
+  up_ = mul(up_, tan_y);
+  pixel_angle = 2 * tan_y / h;
 }
 
 V3 CameraRays::direction(int x, int y) const {

@@ -17,7 +17,8 @@ using test::V3;
 
 // The pinhole camera of the kernel: pixel centre (x + 0.5, y + 0.5),
 // u = 2 px / W - 1, v = 1 - 2 py / H (row 0 at the top),
-// dir = normalize(fw + u * right * tan(fov/2) * aspect + v * up * tan(fov/2)),
+// dir = normalize(fw + u * right * tan(fov/2) * aspect + v * up * tan(fov/2))
+// for a vertical fov (camera.fov_axis; a horizontal one divides by aspect),
 // with fw = normalize(target - position), right = normalize(fw x up_hint),
 // up = right x fw.
 struct CameraRays {

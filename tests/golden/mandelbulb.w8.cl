@@ -335,12 +335,12 @@ inline __attribute__((always_inline)) real trap_mandelbulb_int(vec3 p, int power
 // ---- scene distance: the march evaluates this at every step ----
 real scene_dist(TIME_PARAM vec3 p)
 {
-    real b0 = sd_box(v3_sub(p, v3(0.0f, 0.0f, -0.09795524f)), v3(3.0f, 3.0f, 1.2020447f), 0.0f);  // bounding box  (mandelbulb.yaml:12)
+    real b0 = sd_box(v3_sub(p, v3(0.0f, 0.0f, -0.09795524f)), v3(6.0f, 6.0f, 1.2020447f), 0.0f);  // bounding box  (mandelbulb.yaml:12)
     real d1 = b0;
-    if (M_ANY(b0 <= 0.75f))
+    if (M_ANY(b0 <= 1.5f))
     {
         vec3 p2 = v3_sub(p, v3(0.0f, 0.0f, -1.25f));  // translate x=0 y=0 z=-1.25  (mandelbulb.yaml:16)
-        real d3 = sd_box(p2, v3(3.0f, 3.0f, 0.05f), 0.0f);  // box hx=3 hy=3 hz=0.05 radius=0  (mandelbulb.yaml:15)
+        real d3 = sd_box(p2, v3(6.0f, 6.0f, 0.05f), 0.0f);  // box hx=6 hy=6 hz=0.05 radius=0  (mandelbulb.yaml:15)
         real b4 = sd_box(v3_sub(p, v3(0.0f, 0.0f, 0.0f)), v3(1.1040895f, 1.1040895f, 1.1040895f), 0.0f);  // bounding box  (mandelbulb.yaml:14)
         real d5 = b4;
         if (M_ANY(b4 <= 0.27602237f))
@@ -350,7 +350,7 @@ real scene_dist(TIME_PARAM vec3 p)
         }
         real d7 = d3;  // union  (mandelbulb.yaml:12)
         d7 = fmin(d7, d5);
-        d1 = SEL(d7, b0, b0 > 0.75f);
+        d1 = SEL(d7, b0, b0 > 1.5f);
     }
     return d1;
 }
@@ -358,13 +358,13 @@ real scene_dist(TIME_PARAM vec3 p)
 // ---- scene distance with material: evaluated once per hit ----
 real scene_dist_mat(TIME_PARAM vec3 p, real* mat)
 {
-    real b0 = sd_box(v3_sub(p, v3(0.0f, 0.0f, -0.09795524f)), v3(3.0f, 3.0f, 1.2020447f), 0.0f);  // bounding box  (mandelbulb.yaml:12)
+    real b0 = sd_box(v3_sub(p, v3(0.0f, 0.0f, -0.09795524f)), v3(6.0f, 6.0f, 1.2020447f), 0.0f);  // bounding box  (mandelbulb.yaml:12)
     real d1 = b0;
     real m2 = (real)(0.0f);
-    if (M_ANY(b0 <= 0.75f))
+    if (M_ANY(b0 <= 1.5f))
     {
         vec3 p3 = v3_sub(p, v3(0.0f, 0.0f, -1.25f));  // translate x=0 y=0 z=-1.25  (mandelbulb.yaml:16)
-        real d4 = sd_box(p3, v3(3.0f, 3.0f, 0.05f), 0.0f);  // box hx=3 hy=3 hz=0.05 radius=0  (mandelbulb.yaml:15)
+        real d4 = sd_box(p3, v3(6.0f, 6.0f, 0.05f), 0.0f);  // box hx=6 hy=6 hz=0.05 radius=0  (mandelbulb.yaml:15)
         real b5 = sd_box(v3_sub(p, v3(0.0f, 0.0f, 0.0f)), v3(1.1040895f, 1.1040895f, 1.1040895f), 0.0f);  // bounding box  (mandelbulb.yaml:14)
         real d6 = b5;
         real m7 = (real)(0.0f);
@@ -378,8 +378,8 @@ real scene_dist_mat(TIME_PARAM vec3 p, real* mat)
         real m10 = (real)(2.0f);
         m10 = SEL(m10, m7, d6 < d9);
         d9 = fmin(d9, d6);
-        d1 = SEL(d9, b0, b0 > 0.75f);
-        m2 = SEL(m10, (real)(0.0f), b0 > 0.75f);
+        d1 = SEL(d9, b0, b0 > 1.5f);
+        m2 = SEL(m10, (real)(0.0f), b0 > 1.5f);
     }
     *mat = m2;
     return d1;
@@ -388,13 +388,13 @@ real scene_dist_mat(TIME_PARAM vec3 p, real* mat)
 // ---- orbit trap of the nearest fractal: evaluated once per hit, for orbit-trap materials ----
 real scene_trap(TIME_PARAM vec3 p)
 {
-    real b0 = sd_box(v3_sub(p, v3(0.0f, 0.0f, -0.09795524f)), v3(3.0f, 3.0f, 1.2020447f), 0.0f);  // bounding box  (mandelbulb.yaml:12)
+    real b0 = sd_box(v3_sub(p, v3(0.0f, 0.0f, -0.09795524f)), v3(6.0f, 6.0f, 1.2020447f), 0.0f);  // bounding box  (mandelbulb.yaml:12)
     real d1 = b0;
     real m2 = (real)(0.0f);
-    if (M_ANY(b0 <= 0.75f))
+    if (M_ANY(b0 <= 1.5f))
     {
         vec3 p3 = v3_sub(p, v3(0.0f, 0.0f, -1.25f));  // translate x=0 y=0 z=-1.25  (mandelbulb.yaml:16)
-        real d4 = sd_box(p3, v3(3.0f, 3.0f, 0.05f), 0.0f);  // box hx=3 hy=3 hz=0.05 radius=0  (mandelbulb.yaml:15)
+        real d4 = sd_box(p3, v3(6.0f, 6.0f, 0.05f), 0.0f);  // box hx=6 hy=6 hz=0.05 radius=0  (mandelbulb.yaml:15)
         real b5 = sd_box(v3_sub(p, v3(0.0f, 0.0f, 0.0f)), v3(1.1040895f, 1.1040895f, 1.1040895f), 0.0f);  // bounding box  (mandelbulb.yaml:14)
         real d6 = b5;
         real m7 = (real)(0.0f);
@@ -412,8 +412,8 @@ real scene_trap(TIME_PARAM vec3 p)
         real m14 = (real)(0.0f);
         m14 = SEL(m14, m7, d6 < d13);
         d13 = fmin(d13, d6);
-        d1 = SEL(d13, b0, b0 > 0.75f);
-        m2 = SEL(m14, (real)(0.0f), b0 > 0.75f);
+        d1 = SEL(d13, b0, b0 > 1.5f);
+        m2 = SEL(m14, (real)(0.0f), b0 > 1.5f);
     }
     (void)d1;
     return m2;
@@ -551,7 +551,7 @@ vec3 shade_surface(TIME_PARAM vec3 p, vec3 n, vec3 v, real mat, real trap, real 
     c = v3_scale(c, occlusion);  // ambient occlusion dims the ambient light only
     const vec3 shadow_origin = v3_mad(p, n, 2.0f * footprint);
     // light 0: directional (mandelbulb.yaml:8)
-    c = v3_add(c, v3_scale(shade_blinn_phong(n, v3(0.55138016f, -0.45112923f, 0.7017566f), v, albedo, specular, shininess, v3(1.25f, 1.15f, 1.0f)), shadow_soft(TIME_ARG shadow_origin, v3(0.55138016f, -0.45112923f, 0.7017566f), 2.0f * footprint, ray_box_exit(shadow_origin, v3(0.55138016f, -0.45112923f, 0.7017566f), v3(-3.061f, -3.061f, -1.361f), v3(3.061f, 3.061f, 1.1650895f), 50.0f), 10.0f, footprint, 0.5f * footprint, 64, hit & (v3_dot(n, v3(0.55138016f, -0.45112923f, 0.7017566f)) > 0.0f))));
+    c = v3_add(c, v3_scale(shade_blinn_phong(n, v3(0.55138016f, -0.45112923f, 0.7017566f), v, albedo, specular, shininess, v3(1.25f, 1.15f, 1.0f)), shadow_soft(TIME_ARG shadow_origin, v3(0.55138016f, -0.45112923f, 0.7017566f), 2.0f * footprint, ray_box_exit(shadow_origin, v3(0.55138016f, -0.45112923f, 0.7017566f), v3(-6.121f, -6.121f, -1.421f), v3(6.121f, 6.121f, 1.2250896f), 50.0f), 10.0f, footprint, 0.5f * footprint, 64, hit & (v3_dot(n, v3(0.55138016f, -0.45112923f, 0.7017566f)) > 0.0f))));
     // light 1: point, falls off with the squared distance (mandelbulb.yaml:9)
     {
         vec3 l = v3_sub(v3(-2.5f, -2.0f, 2.5f), p);
@@ -568,7 +568,7 @@ vec3 sdfc_segment(TIME_PARAM vec3 ro, vec3 rd, mask active, real pixel_angle, re
 {
     // march only where the ray crosses the scene's bounds (inferred from the IR)
     real t0, t1;
-    active = active & ray_box(ro, rd, v3(-3.061f, -3.061f, -1.361f), v3(3.061f, 3.061f, 1.1650895f), &t0, &t1);
+    active = active & ray_box(ro, rd, v3(-6.121f, -6.121f, -1.421f), v3(6.121f, 6.121f, 1.2250896f), &t0, &t1);
     t1 = fmin(t1, 50.0f);
     (void)jitter;
     active = active & (t0 < t1);  // render.max_distance from the first step on

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "sdfc/codegen/camera_view.hpp"
 #include "sdfc/codegen/emit_opencl.hpp"
 
 namespace sdfc::codegen {
@@ -71,18 +72,17 @@ void put(std::vector<float>& f, int at, V v) {
 }  // namespace
 
 std::vector<float> frame_params(const ir::RenderPlan& plan, int width, int height, double time) {
-  const ir::Camera c = camera_at(plan.camera, time);
+  const ir::Camera c = fitted(camera_at(plan.camera, time), width, height);
   V fw = normalize(sub(c.target, c.position));
   V rt = normalize(cross(fw, c.up));
   V up = cross(rt, fw);
-  double tan_half = std::tan(c.fov_degrees * std::numbers::pi / 360.0);
-  double aspect = double(width) / double(height);
+  const auto [tan_x, tan_y] = fov_tangents(c, width, height);
   std::vector<float> f(abi::kFrameFloats, 0.0f);
   put(f, abi::kEye, c.position);
   put(f, abi::kForward, fw);
-  put(f, abi::kRight, scale(rt, tan_half * aspect));
-  put(f, abi::kUp, scale(up, tan_half));
-  f[abi::kPixelAngle] = static_cast<float>(2.0 * tan_half / height);
+  put(f, abi::kRight, scale(rt, tan_x));
+  put(f, abi::kUp, scale(up, tan_y));
+  f[abi::kPixelAngle] = static_cast<float>(2.0 * tan_y / height);
   f[abi::kTime] = static_cast<float>(time);
   f[abi::kFirstSample] = 0.0f;
   f[abi::kSampleCount] = static_cast<float>(plan.march.samples);

@@ -9,6 +9,7 @@
 #include <map>
 #include <set>
 
+#include "fit_box.hpp"
 #include "sdfc/ir/analyses.hpp"
 #include "sdfc/passes/passes.hpp"
 
@@ -120,6 +121,7 @@ ir::Module analyse(ir::Module m) {
   a.uniform_material = uniform_material(m);
   a.ray_bounds = ray_bounds(m);
   m.analyses = std::move(a);
+  detail::record_fit_box(m);  // what camera.fit frames
   return m;
 }
 

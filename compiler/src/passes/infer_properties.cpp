@@ -7,6 +7,7 @@
 
 #include "catalogue_props.hpp"
 #include "domain_props.hpp"
+#include "fractal_bounds.hpp"
 #include "sdfc/ir/fractal_math.hpp"
 #include "sdfc/passes/passes.hpp"
 
@@ -231,6 +232,7 @@ ir::Module infer_properties(ir::Module m) {
   for (ir::NodeId id : g.postorder(m.root)) {
     const ir::Node& n = g.node(id);
     ir::Props p = n.animated() ? infer_animated(g, n) : infer(g, n);
+    p.bounds = detail::fractal_bounds(g, id, p.bounds);
     p.corrected = m.plan.march.lipschitz_correction && p.lipschitz > 1 + 1e-9;
     g.mutable_node(id).props = p;
   }

@@ -36,6 +36,7 @@ void CameraRig::reset(const ir::Camera& start) {
   fwd_ = normalize(d);
   up_ = normalize(start.up);
   fov_ = start.fov_degrees;
+  fov_axis_ = start.fov_axis;
 }
 
 void CameraRig::turn(double yaw, double pitch) {
@@ -91,13 +92,17 @@ ir::Camera CameraRig::camera() const {
   c.target = add(pos_, scale(fwd_, focus_));
   c.up = up_;
   c.fov_degrees = fov_;
+  c.fov_axis = fov_axis_;
   return c;
 }
 
 std::string camera_yaml(const ir::Camera& c) {
   auto v = [](const V& a) { return fmt::format("[{:.6g}, {:.6g}, {:.6g}]", a[0], a[1], a[2]); };
-  return fmt::format("camera: {{position: {}, target: {}, up: {}, fov: {:.6g}}}", v(c.position), v(c.target),
-                     v(c.up), c.fov_degrees);
+  const char* axis = c.fov_axis == ir::Camera::FovAxis::Horizontal ? ", fov_axis: horizontal"
+                     : c.fov_axis == ir::Camera::FovAxis::Auto     ? ", fov_axis: auto"
+                                                                    : "";
+  return fmt::format("camera: {{position: {}, target: {}, up: {}, fov: {:.6g}{}}}", v(c.position), v(c.target),
+                     v(c.up), c.fov_degrees, axis);
 }
 
 }  // namespace sdfc::viewer

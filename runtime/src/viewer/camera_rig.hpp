@@ -46,6 +46,7 @@ class CameraRig {
 
   ir::Vec3d pos_{}, fwd_{}, up_{};
   double fov_ = 45;
+  ir::Camera::FovAxis fov_axis_ = ir::Camera::FovAxis::Vertical;
   double focus_ = 1;  // distance to the target along the view
   CameraMode mode_ = CameraMode::Fly;
   double speed_ = 1;

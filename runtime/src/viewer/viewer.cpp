@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <iostream>
 #include <sdfrt/image_io.hpp>
+#include "sdfc/codegen/camera_view.hpp"
 #include <unistd.h>
 
 namespace sdfc::viewer {
@@ -34,7 +35,7 @@ double mean_steps(const sdfrt::FloatImage& img) {
 }  // namespace
 
 Viewer::Viewer(SceneSession& scene, SdlWindow& window, ViewerOptions options)
-    : scene_(scene), window_(window), opt_(std::move(options)), rig_(scene.module().plan.camera),
+    : scene_(scene), window_(window), opt_(std::move(options)), rig_(codegen::fitted(scene.module().plan.camera, opt_.width, opt_.height)),
       governor_(opt_.frame_budget_ms) {
   last_tick_ = SDL_GetPerformanceCounter();
   update_title();
@@ -65,7 +66,7 @@ void Viewer::handle_event(const SDL_Event& e) {
         case SDLK_ESCAPE: quit_ = true; break;
         case SDLK_TAB: rig_.toggle_mode(); break;
         case SDLK_r:
-          rig_.reset(scene_.module().plan.camera);
+          rig_.reset(codegen::fitted(scene_.module().plan.camera, opt_.width, opt_.height));
           moved_ = true;
           break;
         case SDLK_F1: toggle_overlay(); break;

@@ -1,9 +1,9 @@
 // ---- scene distance: the march evaluates this at every step ----
 real scene_dist(TIME_PARAM vec3 p)
 {
-    real b0 = sd_box(v3_sub(p, v3(0.0f, 0.0f, 0.0f)), v3(4.0f, 4.0f, 4.0f), 0.0f);  // bounding box  (hybrid.yaml:23)
+    real b0 = sd_box(v3_sub(p, v3(0.0f, 0.0f, 0.0f)), v3(2.5625f, 2.5625f, 2.3125f), 0.0f);  // bounding box  (hybrid.yaml:25)
     real d1 = b0;
-    if (M_ANY(b0 <= 1.0f))
+    if (M_ANY(b0 <= 0.640625f))
     {
         real hyb2;  // hybrid orbit: 12 iterations, the step pattern repeats every 3
         {
@@ -28,8 +28,8 @@ real scene_dist(TIME_PARAM vec3 p)
             real r0 = v3_length(p);
             hyb2 = SEL(hyb2, r0 - 4.0f, r0 > 8.0f);
         }
-        real d3 = hyb2;  // hybrid iterations=12 bailout=4 steps=2 k0=0 n0=1 a0=8 b0=0 c0=0 d0=0 k1=1 n1=2 a1=2 b1=0.5 c1=1 d1=1 k2=0 n2=0 a2=0 b2=0 c2=0 d2=0 k3=0 n3=0 a3=0 b3=0 c3=0 d3=0  (hybrid.yaml:16)
-        d1 = SEL(d3, b0, b0 > 1.0f);
+        real d3 = hyb2;  // hybrid iterations=12 bailout=4 steps=2 k0=0 n0=1 a0=8 b0=0 c0=0 d0=0 k1=1 n1=2 a1=2 b1=0.5 c1=1 d1=1 k2=0 n2=0 a2=0 b2=0 c2=0 d2=0 k3=0 n3=0 a3=0 b3=0 c3=0 d3=0  (hybrid.yaml:18)
+        d1 = SEL(d3, b0, b0 > 0.640625f);
     }
     return d1;
 }
@@ -37,10 +37,10 @@ real scene_dist(TIME_PARAM vec3 p)
 // ---- scene distance with material: evaluated once per hit ----
 real scene_dist_mat(TIME_PARAM vec3 p, real* mat)
 {
-    real b0 = sd_box(v3_sub(p, v3(0.0f, 0.0f, 0.0f)), v3(4.0f, 4.0f, 4.0f), 0.0f);  // bounding box  (hybrid.yaml:23)
+    real b0 = sd_box(v3_sub(p, v3(0.0f, 0.0f, 0.0f)), v3(2.5625f, 2.5625f, 2.3125f), 0.0f);  // bounding box  (hybrid.yaml:25)
     real d1 = b0;
     real m2 = (real)(0.0f);
-    if (M_ANY(b0 <= 1.0f))
+    if (M_ANY(b0 <= 0.640625f))
     {
         real hyb3;  // hybrid orbit: 12 iterations, the step pattern repeats every 3
         {
@@ -65,9 +65,9 @@ real scene_dist_mat(TIME_PARAM vec3 p, real* mat)
             real r0 = v3_length(p);
             hyb3 = SEL(hyb3, r0 - 4.0f, r0 > 8.0f);
         }
-        real d4 = hyb3;  // hybrid iterations=12 bailout=4 steps=2 k0=0 n0=1 a0=8 b0=0 c0=0 d0=0 k1=1 n1=2 a1=2 b1=0.5 c1=1 d1=1 k2=0 n2=0 a2=0 b2=0 c2=0 d2=0 k3=0 n3=0 a3=0 b3=0 c3=0 d3=0  (hybrid.yaml:16)
-        d1 = SEL(d4, b0, b0 > 1.0f);
-        m2 = SEL((real)(1.0f), (real)(0.0f), b0 > 1.0f);
+        real d4 = hyb3;  // hybrid iterations=12 bailout=4 steps=2 k0=0 n0=1 a0=8 b0=0 c0=0 d0=0 k1=1 n1=2 a1=2 b1=0.5 c1=1 d1=1 k2=0 n2=0 a2=0 b2=0 c2=0 d2=0 k3=0 n3=0 a3=0 b3=0 c3=0 d3=0  (hybrid.yaml:18)
+        d1 = SEL(d4, b0, b0 > 0.640625f);
+        m2 = SEL((real)(1.0f), (real)(0.0f), b0 > 0.640625f);
     }
     *mat = m2;
     return d1;
@@ -76,10 +76,10 @@ real scene_dist_mat(TIME_PARAM vec3 p, real* mat)
 // ---- orbit trap of the nearest fractal: evaluated once per hit, for orbit-trap materials ----
 real scene_trap(TIME_PARAM vec3 p)
 {
-    real b0 = sd_box(v3_sub(p, v3(0.0f, 0.0f, 0.0f)), v3(4.0f, 4.0f, 4.0f), 0.0f);  // bounding box  (hybrid.yaml:23)
+    real b0 = sd_box(v3_sub(p, v3(0.0f, 0.0f, 0.0f)), v3(2.5625f, 2.5625f, 2.3125f), 0.0f);  // bounding box  (hybrid.yaml:25)
     real d1 = b0;
     real m2 = (real)(0.0f);
-    if (M_ANY(b0 <= 1.0f))
+    if (M_ANY(b0 <= 0.640625f))
     {
         real hyb3;  // hybrid orbit: 12 iterations, the step pattern repeats every 3
         {
@@ -104,7 +104,7 @@ real scene_trap(TIME_PARAM vec3 p)
             real r0 = v3_length(p);
             hyb3 = SEL(hyb3, r0 - 4.0f, r0 > 8.0f);
         }
-        real d4 = hyb3;  // hybrid iterations=12 bailout=4 steps=2 k0=0 n0=1 a0=8 b0=0 c0=0 d0=0 k1=1 n1=2 a1=2 b1=0.5 c1=1 d1=1 k2=0 n2=0 a2=0 b2=0 c2=0 d2=0 k3=0 n3=0 a3=0 b3=0 c3=0 d3=0  (hybrid.yaml:16)
+        real d4 = hyb3;  // hybrid iterations=12 bailout=4 steps=2 k0=0 n0=1 a0=8 b0=0 c0=0 d0=0 k1=1 n1=2 a1=2 b1=0.5 c1=1 d1=1 k2=0 n2=0 a2=0 b2=0 c2=0 d2=0 k3=0 n3=0 a3=0 b3=0 c3=0 d3=0  (hybrid.yaml:18)
         real htrap5;  // hybrid orbit trap
         {
             vec3 z = p;
@@ -128,8 +128,8 @@ real scene_trap(TIME_PARAM vec3 p)
             htrap5 = trap;
         }
         real trap6 = htrap5;  // orbit trap
-        d1 = SEL(d4, b0, b0 > 1.0f);
-        m2 = SEL(trap6, (real)(0.0f), b0 > 1.0f);
+        d1 = SEL(d4, b0, b0 > 0.640625f);
+        m2 = SEL(trap6, (real)(0.0f), b0 > 0.640625f);
     }
     (void)d1;
     return m2;

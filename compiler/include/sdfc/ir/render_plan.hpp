@@ -25,7 +25,17 @@ struct Camera {
   Vec3d position{0, -3, 0};
   Vec3d target{0, 0, 0};
   Vec3d up{0, 0, 1};
-  double fov_degrees = 45;  // vertical
+  double fov_degrees = 45;  // along fov_axis
+  // Which side of the image the fov spans: vertical, horizontal, or auto
+  // (the longer side, as Blender's sensor fit "auto").
+  enum class FovAxis { Vertical, Horizontal, Auto } fov_axis = FovAxis::Vertical;
+  // camera.fit: the host places the camera so fit_lo..fit_hi (the scene's
+  // bounds, recorded by the analyse pass) fill the frame, looking along
+  // `direction` (or position -> target when direction is all zero).
+  bool fit = false;
+  Vec3d direction{0, 0, 0};
+  bool has_fit_box = false;
+  Vec3d fit_lo{0, 0, 0}, fit_hi{0, 0, 0};
   // Depth of field: lens diameter (0 = pinhole) and the distance in focus
   // (0 = the distance to the target).
   double aperture = 0;
