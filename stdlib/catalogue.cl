@@ -241,3 +241,17 @@ inline real sd_box_frame(vec3 p, vec3 h, real e)
     real d3 = v3_length(v3_max_s(v3(q.x, q.y, a.z), K(0.0f))) + fmin(fmax(q.x, fmax(q.y, a.z)), K(0.0f));
     return fmin(fmin(d1, d2), d3);
 }
+
+//! fn sd_solid_angle
+//! deps: vec3_ops
+//! class: exact
+// The part of a ball of radius ra inside the cone of half-angle a about +z,
+// apex at the centre; s, c = sin a, cos a (Quilez's sdSolidAngle, z up).
+inline real sd_solid_angle(vec3 p, real s, real c, real ra)
+{
+    real qx = sqrt(p.x * p.x + p.y * p.y), qy = p.z;
+    real l = sqrt(qx * qx + qy * qy) - ra;
+    real t = fmin(fmax(qx * s + qy * c, K(0.0f)), ra);
+    real mx = qx - s * t, my = qy - c * t;
+    return fmax(l, sqrt(mx * mx + my * my) * sign(c * qx - s * qy));
+}

@@ -10,8 +10,11 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
+#include <vector>
 
 #include "scene_text.hpp"
+#include "sdfc/kinds/registry.hpp"
 #include "sdfc/passes/passes.hpp"
 #include "sdfc/reference/evaluator.hpp"
 #include "surface_sampling.hpp"
@@ -22,29 +25,12 @@ namespace {
 using test::P3;
 
 struct Scene {
-  const char* name;
-  const char* geometry;
+  std::string name;
+  std::string geometry;
 };
 
-const Scene kScenes[] = {
-    {"sphere", "{sphere: {radius: 0.7}}"},
-    {"box", "{box: {size: [1, 0.8, 0.6], radius: 0.1}}"},
-    {"torus", "{torus: {major_radius: 0.6, minor_radius: 0.2}}"},
-    {"cylinder", "{cylinder: {radius: 0.5, height: 1.2}}"},
-    {"cone", "{cone: {radius: 0.6, height: 1.2}}"},
-    {"capped_cone", "{capped_cone: {height: 1.0, bottom_radius: 0.6, top_radius: 0.25}}"},
-    {"round_cone", "{round_cone: {height: 0.8, bottom_radius: 0.4, top_radius: 0.15}}"},
-    {"ellipsoid", "{ellipsoid: {radii: [0.9, 0.5, 0.2]}}"},
-    {"octahedron", "{octahedron: {size: 0.7}}"},
-    {"hex_prism", "{hex_prism: {apothem: 0.5, height: 0.8}}"},
-    {"tri_prism", "{tri_prism: {side: 1.0, height: 0.6}}"},
-    {"link", "{link: {length: 0.6, major_radius: 0.35, minor_radius: 0.1}}"},
-    {"rounded_cylinder", "{rounded_cylinder: {radius: 0.5, height: 0.9, edge_radius: 0.15}}"},
-    {"pyramid", "{pyramid: {base: 1.0, height: 0.8}}"},
+const Scene kOwnScenes[] = {
     {"segment", "{segment: {a: [-0.4, 0.1, -0.3], b: [0.3, -0.2, 0.4], radius: 0.15}}"},
-    {"triangle", "{triangle: {a: [-0.5, -0.4, -0.1], b: [0.6, -0.3, 0.2], c: [0.0, 0.5, 0.0], thickness: 0.08}}"},
-    {"quad", "{quad: {a: [-0.5, -0.5, 0], b: [0.6, -0.4, 0], c: [0.5, 0.5, 0], d: [-0.4, 0.4, 0], thickness: 0.08}}"},
-    {"box_frame", "{box_frame: {size: [1.0, 0.8, 0.6], edge: 0.08}}"},
     {"repeat_finite", "{box: {size: [0.5, 0.4, 0.3], radius: 0.05}, repeat: {period: [0.7, 0.6, 0.5], count: [3, 2, 3]}}"},
     {"repeat_reaching", "{sphere: {radius: 0.45}, repeat: {period: [0.6, 0.6, 0], count: [4, 3, 1]}}"},
     {"mirror", "{union: [{sphere: {radius: 0.3}, translate: [0.4, 0.2, 0.1]}], mirror: [x, y]}"},
@@ -71,6 +57,19 @@ const Scene kScenes[] = {
     {"stairs_union", "{stairs_union: {radius: 0.3, steps: 4, children: [{box: {size: [1, 1, 0.2]}}, {box: {size: [0.2, 1, 1]}}]}}"},
     {"stairs_intersection", "{stairs_intersection: {radius: 0.2, steps: 3, children: [{sphere: {radius: 0.6}}, {box: {size: [0.9, 0.9, 0.9]}}]}}"},
 };
+
+// Every described kind's example, then the scenes above.
+const std::vector<Scene>& scenes() {
+  static const std::vector<Scene> v = [] {
+    std::vector<Scene> out;
+    for (const kinds::Description* d : kinds::all())
+      if (d->kind != ir::Kind::Plane)  // unbounded: the rays' box would hold no first surface to find
+        out.push_back({std::string(d->yaml), std::string(d->example)});
+    out.insert(out.end(), std::begin(kOwnScenes), std::end(kOwnScenes));
+    return out;
+  }();
+  return v;
+}
 
 ir::Module compile(const std::string& geometry, bool correct) {
   std::string yaml = std::string("render: {lipschitz_correction: ") + (correct ? "true" : "false") + "}\nscene: " + geometry + "\n";
@@ -146,16 +145,16 @@ TEST_P(LowerBound, SphereTracingNeverPassesTheFirstSurface) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Domain, LowerBound, ::testing::ValuesIn(kScenes),
-                         [](const auto& info) { return std::string(info.param.name); });
+INSTANTIATE_TEST_SUITE_P(Domain, LowerBound, ::testing::ValuesIn(scenes()),
+                         [](const auto& info) { return info.param.name; });
 
 // Without the correction the steep twist and displacement overshoot: the
 // property above is not vacuous.
 TEST(LowerBoundUncorrected, SteepTwistAndDisplacementOvershoot) {
   for (const char* name : {"twist", "displace"}) {
     const Scene* sc = nullptr;
-    for (const Scene& s : kScenes)
-      if (std::string(s.name) == name) sc = &s;
+    for (const Scene& s : scenes())
+      if (s.name == name) sc = &s;
     ir::Module raw = compile(sc->geometry, false);
     EXPECT_GT(raw.graph->node(raw.root).props.lipschitz, 1.5) << name;
     MarchStats s = march(raw, raw, 300);

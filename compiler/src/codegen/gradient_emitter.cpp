@@ -8,6 +8,8 @@
 #include <stdexcept>
 
 #include "fractal_emitter.hpp"
+#include "kind_call.hpp"
+#include "sdfc/kinds/registry.hpp"
 
 namespace sdfc::codegen::detail {
 
@@ -38,7 +40,7 @@ class GradientEmitter {
  private:
   std::string var(const char* prefix) { return fmt::format("{}{}", prefix, w_.fresh()); }
 
-  DG leaf(const char* fn, const std::string& args, const ir::Node& n) {
+  DG leaf(const std::string& fn, const std::string& args, const ir::Node& n) {
     used_.insert(fn);
     DG v{var("d"), var("g")};
     w_.line(fmt::format("vec3 {};", v.g));
@@ -51,13 +53,8 @@ class GradientEmitter {
     const auto& q = n.params;
     auto r = [&](size_t i) { return lit_.real(q[i]); };
     switch (n.kind) {
-      case Kind::Sphere: return leaf("sdg_sphere", fmt::format("{}, {}", p, r(0)), n);
-      case Kind::Box: return leaf("sdg_box", fmt::format("{}, {}, {}", p, lit_.vec3({q[0], q[1], q[2]}), r(3)), n);
-      case Kind::Torus: return leaf("sdg_torus", fmt::format("{}, {}, {}", p, r(0), r(1)), n);
-      case Kind::Plane: return leaf("sdg_plane", fmt::format("{}, {}, {}", p, lit_.vec3({q[0], q[1], q[2]}), r(3)), n);
-      case Kind::Cylinder: return leaf("sdg_cylinder", fmt::format("{}, {}, {}", p, r(0), r(1)), n);
-      case Kind::Capsule:
-        return leaf("sdg_capsule", fmt::format("{}, {}, {}, {}", p, lit_.vec3({q[0], q[1], q[2]}), lit_.vec3({q[3], q[4], q[5]}), r(6)), n);
+      // Described kinds: the description's gradient function, same arguments.
+      default: break;
       case Kind::Translate: {
         std::string p2 = var("p");
         w_.line(fmt::format("vec3 {} = v3_sub({}, {});", p2, p, lit_.vec3({q[0], q[1], q[2]})));
@@ -149,10 +146,12 @@ class GradientEmitter {
       case Kind::Juliabulb:
       case Kind::Mandelbox:
       case Kind::QuaternionJulia: return fractal(n, p);
-      default:
-        throw std::logic_error(fmt::format("dual normals reached '{}', which the front end should have refused",
-                                           ir::info(n.kind).name));
     }
+    const kinds::Description* d = kinds::find(n.kind);
+    if (!d || d->gradient_function.empty())
+      throw std::logic_error(fmt::format("dual normals reached '{}', which the front end should have refused",
+                                           ir::info(n.kind).name));
+    return leaf(std::string(d->gradient_function), p + ", " + kind_args(n, lit_, false), n);
   }
 
   // A fractal: its distance exactly as scene_dist computes it (so the

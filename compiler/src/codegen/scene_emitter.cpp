@@ -10,7 +10,7 @@
 #include <map>
 #include <optional>
 
-#include "catalogue_emitter.hpp"
+#include "kind_call.hpp"
 #include "fractal_emitter.hpp"
 #include "kernel_text.hpp"
 #include "trap_shape_emitter.hpp"
@@ -186,15 +186,6 @@ class SceneEmitter {
     auto r = [&](size_t i) { return param(n, i, lit_); };
     auto v = [&](size_t i) { return param3(n, i, lit_); };
     switch (n.kind) {
-      case Kind::Sphere: return leaf(n, fmt::format("{}({}, {})", call("sd_sphere"), p, r(0)));
-      case Kind::Box:
-        return leaf(n, fmt::format("{}({}, {}, {})", call("sd_box"), p, v(0), r(3)));
-      case Kind::Torus: return leaf(n, fmt::format("{}({}, {}, {})", call("sd_torus"), p, r(0), r(1)));
-      case Kind::Plane:
-        return leaf(n, fmt::format("{}({}, {}, {})", call("sd_plane"), p, v(0), r(3)));
-      case Kind::Cylinder: return leaf(n, fmt::format("{}({}, {}, {})", call("sd_cylinder"), p, r(0), r(1)));
-      case Kind::Capsule:
-        return leaf(n, fmt::format("{}({}, {}, {}, {})", call("sd_capsule"), p, v(0), v(3), r(6)));
       case Kind::Translate: {
         std::string p2 = var("p");
         w_.line(fmt::format("vec3 {} = v3_sub({}, {});  // {}", p2, p, v(0), describe(n)));
@@ -324,7 +315,7 @@ class SceneEmitter {
         return with_d(c, d);
       }
       default:
-        if (auto e = catalogue_call(n, p, lit_, used_)) return leaf(n, *e);
+        if (auto e = kind_call(n, p, lit_, used_)) return leaf(n, *e);
         if (is_fractal(n)) {
           std::string expr = emit_fractal(n, p, lit_, w_, used_);
           Value v = leaf(n, expr);

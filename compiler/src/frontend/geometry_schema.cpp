@@ -10,8 +10,9 @@
 #include <numbers>
 
 #include "animated_node.hpp"
-#include "catalogue_schema.hpp"
 #include "domain_schema.hpp"
+#include "sdfc/kinds/lowering.hpp"
+#include "sdfc/kinds/registry.hpp"
 #include "too_small.hpp"
 
 namespace sdfc::frontend {
@@ -20,13 +21,20 @@ using ir::Kind;
 using ir::NodeId;
 
 const std::vector<std::string_view>& geometry_kinds() {
-  static const std::vector<std::string_view> k = {
-      "sphere", "box", "torus", "plane", "cylinder", "capsule", "union", "intersection",
-      "difference", "smooth_union", "smooth_intersection", "smooth_difference"};
+  // In the order "did you mean" has always tried them (it keeps the first
+  // of equally close words): the first six primitives, the combinators, the
+  // fractals, the other described kinds, segment, the blends.
+  static const std::vector<std::string_view> combinators = {
+      "union", "intersection", "difference", "smooth_union", "smooth_intersection", "smooth_difference"};
   static const std::vector<std::string_view> all = [] {
-    std::vector<std::string_view> v = k;
+    std::vector<std::string_view> v;
+    for (const kinds::Description* d : kinds::all())
+      if (d->kind <= Kind::Capsule) v.push_back(d->yaml);
+    v.insert(v.end(), combinators.begin(), combinators.end());
     for (auto f : fractal_kinds()) v.push_back(f);
-    v.insert(v.end(), catalogue_kinds().begin(), catalogue_kinds().end());
+    for (const kinds::Description* d : kinds::all())
+      if (d->kind > Kind::Capsule) v.push_back(d->yaml);
+    v.push_back("segment");  // a second spelling of the capsule
     v.insert(v.end(), blend_kinds().begin(), blend_kinds().end());
     return v;
   }();
@@ -192,46 +200,20 @@ NodeId GeometryLowering::lower_kind(const SourceValue& key, const SourceValue& b
     Kind kind = k == "smooth_union" ? Kind::SmoothUnion : k == "smooth_intersection" ? Kind::SmoothIntersection : Kind::SmoothDifference;
     return lower_children(kind, key, *kids, {radius});
   }
-  // Primitives and fractals.
-  if (k == "sphere") {
-    MapReader m(r_, body, what, {"radius"});
-    return make_node(b_, Kind::Sphere, {m.param("radius", 1.0, Range::positive())}, {}, at);
-  }
-  if (k == "box") {
-    MapReader m(r_, body, what, {"size", "radius"});
-    Param3 size = m.param3("size", {1, 1, 1}, Range::positive());
-    Param radius = m.param("radius", 0.0, Range::non_negative());
-    double smallest = std::min({size[0].lo, size[1].lo, size[2].lo});
-    if (radius.hi > 0.5 * smallest && m.get("radius"))
-      r_.sink().error(m.get("radius")->loc, fmt::format("box.radius: {} is more than half the smallest side ({})", radius.hi, smallest), "");
-    return make_node(b_, Kind::Box, {size[0].scaled(0.5), size[1].scaled(0.5), size[2].scaled(0.5), radius}, {}, at);
-  }
-  if (k == "torus") {
-    MapReader m(r_, body, what, {"major_radius", "minor_radius"});
-    Param major = m.param("major_radius", 1.0, Range::positive());
-    Param minor = m.param("minor_radius", 0.25, Range::positive());
-    return make_node(b_, Kind::Torus, {major, minor}, {}, at);
-  }
-  if (k == "plane") {
-    MapReader m(r_, body, what, {"normal", "offset"});
-    Vec3d n = m.direction("normal", {0, 0, 1});
-    return make_node(b_, Kind::Plane, {n[0], n[1], n[2], m.param("offset", 0.0)}, {}, at);
-  }
-  if (k == "cylinder") {
-    MapReader m(r_, body, what, {"radius", "height"});
-    Param radius = m.param("radius", 0.5, Range::positive());
-    Param height = m.param("height", 1.0, Range::positive());
-    return make_node(b_, Kind::Cylinder, {radius, height.scaled(0.5)}, {}, at);
-  }
-  if (k == "capsule") {
+  // Primitives (sdfc/kinds/ describes them) and fractals.
+  if (k == "segment") {
+    // A segment with a radius is the capsule's shape; it shares its node.
     MapReader m(r_, body, what, {"a", "b", "radius"});
-    Param3 a = m.param3("a", {0, 0, -0.5}), bb = m.param3("b", {0, 0, 0.5});
-    Param radius = m.param("radius", 0.25, Range::positive());
-    return make_node(b_, Kind::Capsule, {a[0], a[1], a[2], bb[0], bb[1], bb[2], radius}, {}, at);
+    Vec3d a = m.vec3("a", {0, 0, -0.5}), bb = m.vec3("b", {0, 0, 0.5});
+    double radius = m.number("radius", 0.1, Range::positive());
+    return b_.make(Kind::Capsule, {a[0], a[1], a[2], bb[0], bb[1], bb[2], radius}, {}, at);
   }
   for (auto f : fractal_kinds())
     if (k == f) return lower_fractal(r_, b_, key, body);
-  if (auto n = lower_catalogue(r_, b_, key, body)) return *n;
+  if (const kinds::Description* d = kinds::find(std::string_view(k))) {
+    kinds::Lowering l(*d, r_, b_, key, body);
+    return d->lower(l);
+  }
   r_.sink().error(at, fmt::format("unknown node kind '{}'", k), did_you_mean(k, geometry_kinds()));
   return ir::kNoNode;
 }

@@ -20,7 +20,7 @@ std::vector<std::string_view> split_params(std::string_view s) {
 const std::vector<KindInfo>& all_kinds() {
   static const std::vector<KindInfo> kinds = {
 #define NODE(e, name, cat, arity, params, fn) {Kind::e, name, Category::cat, arity, split_params(params), fn},
-#include "sdfc/ir/node_kinds.def"
+#include "sdfc/ir/kind_table.def"  // generated: compiler/kinds.cmake
 #undef NODE
   };
   return kinds;

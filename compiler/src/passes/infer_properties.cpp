@@ -5,9 +5,9 @@
 #include <cmath>
 #include <functional>
 
-#include "catalogue_props.hpp"
 #include "domain_props.hpp"
 #include "fractal_bounds.hpp"
+#include "sdfc/kinds/registry.hpp"
 #include "sdfc/ir/fractal_math.hpp"
 #include "sdfc/passes/passes.hpp"
 
@@ -19,7 +19,6 @@ using ir::Box3;
 using ir::DistanceClass;
 using ir::Kind;
 
-Box3 box(double x0, double y0, double z0, double x1, double y1, double z1) { return {{x0, y0, z0}, {x1, y1, z1}}; }
 
 // The less trustworthy of two classes (exact < bound < estimate < lipschitz).
 DistanceClass worse(DistanceClass a, DistanceClass b) { return int(a) > int(b) ? a : b; }
@@ -50,26 +49,9 @@ ir::Props infer(const ir::Graph& g, const ir::Node& n) {
     c.lipschitz_region = Box3::everything();
     return c;
   };
-  if (auto c = detail::catalogue_props(n)) return *c;
+  if (const kinds::Description* d = kinds::find(n.kind)) return d->props(n);
   if (auto d = detail::domain_props(g, n, kid)) return *d;
   switch (n.kind) {
-    case Kind::Sphere: p.bounds = Box3::cube(q[0]); p.cost = 6; break;
-    case Kind::Box: p.bounds = box(-q[0], -q[1], -q[2], q[0], q[1], q[2]); p.cost = 16; break;
-    case Kind::Torus: {
-      double r = q[0] + q[1];
-      p.bounds = box(-r, -r, -q[1], r, r, q[1]);
-      p.cost = 10;
-      break;
-    }
-    case Kind::Plane: p.bounds = Box3::everything(); p.cost = 5; break;
-    case Kind::Cylinder: p.bounds = box(-q[0], -q[0], -q[1], q[0], q[0], q[1]); p.cost = 12; break;
-    case Kind::Capsule: {
-      double r = q[6];
-      p.bounds = box(std::min(q[0], q[3]) - r, std::min(q[1], q[4]) - r, std::min(q[2], q[5]) - r,
-                     std::max(q[0], q[3]) + r, std::max(q[1], q[4]) + r, std::max(q[2], q[5]) + r);
-      p.cost = 18;
-      break;
-    }
     case Kind::Mandelbulb:
       // The estimator is a bound in practice but not provably; L = 1 assumed.
       // The numeric methods run the orbit four times.
@@ -168,10 +150,8 @@ ir::Props infer(const ir::Graph& g, const ir::Node& n) {
         p.bounds = p.bounds.padded(double(n.children.size() - 1) * q[0] * 0.25);
       break;
     }
-    // The primitive catalogue: catalogue_props above.
-    case Kind::Cone: case Kind::CappedCone: case Kind::RoundCone: case Kind::Ellipsoid: case Kind::Octahedron:
-    case Kind::HexPrism: case Kind::TriPrism: case Kind::Link: case Kind::RoundedCylinder: case Kind::Pyramid:
-    case Kind::Triangle: case Kind::Quad: case Kind::BoxFrame: break;
+    // Described kinds (sdfc/kinds/): their description above.
+    default: break;
     // Domain operations and blends: domain_props above.
     case Kind::Repeat: case Kind::Mirror: case Kind::PolarRepeat: case Kind::Symmetry: case Kind::Twist:
     case Kind::Bend: case Kind::Elongate: case Kind::Round: case Kind::Onion: case Kind::Shell:

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "fractals.hpp"
-#include "catalogue.hpp"
+#include "sdfc/kinds/registry.hpp"
 #include "domain.hpp"
 #include "materials.hpp"
 #include "sdfc/ir/fractal_math.hpp"
@@ -85,33 +85,9 @@ namespace {
 Sample evaluate_node(const ir::Graph& g, ir::NodeId id, const Vec3& p) {
   const ir::Node& n = g.node(id);
   const auto& q = n.params;
-  if (auto d = detail::catalogue_distance(n, p)) return {*d, 0};
+  if (const kinds::Description* d = kinds::find(n.kind)) return {d->distance(n, p), 0};
   if (auto d = detail::domain_evaluate(g, n, p)) return *d;
   switch (n.kind) {
-    case Kind::Sphere: return {len(p[0], p[1], p[2]) - q[0], 0};
-    case Kind::Box: {
-      double r = q[3];
-      double dx = std::fabs(p[0]) - q[0] + r, dy = std::fabs(p[1]) - q[1] + r, dz = std::fabs(p[2]) - q[2] + r;
-      double outside = len(std::max(dx, 0.0), std::max(dy, 0.0), std::max(dz, 0.0));
-      double inside = std::min(std::max({dx, dy, dz}), 0.0);
-      return {outside + inside - r, 0};
-    }
-    case Kind::Torus: {
-      double ring = std::hypot(p[0], p[1]) - q[0];
-      return {std::hypot(ring, p[2]) - q[1], 0};
-    }
-    case Kind::Plane: return {p[0] * q[0] + p[1] * q[1] + p[2] * q[2] - q[3], 0};
-    case Kind::Cylinder: {
-      double dr = std::hypot(p[0], p[1]) - q[0], dz = std::fabs(p[2]) - q[1];
-      return {std::min(std::max(dr, dz), 0.0) + std::hypot(std::max(dr, 0.0), std::max(dz, 0.0)), 0};
-    }
-    case Kind::Capsule: {
-      double pa[3] = {p[0] - q[0], p[1] - q[1], p[2] - q[2]};
-      double ba[3] = {q[3] - q[0], q[4] - q[1], q[5] - q[2]};
-      double bb = ba[0] * ba[0] + ba[1] * ba[1] + ba[2] * ba[2];
-      double h = bb > 0 ? std::clamp((pa[0] * ba[0] + pa[1] * ba[1] + pa[2] * ba[2]) / bb, 0.0, 1.0) : 0.0;
-      return {len(pa[0] - ba[0] * h, pa[1] - ba[1] * h, pa[2] - ba[2] * h) - q[6], 0};
-    }
     case Kind::Mandelbulb:
       if (q[3] != 0) return {fractals::mandelbulb_numeric(p, q), 0};
       return {mandelbulb(p, q[0], int(q[1]), q[2]), 0};
@@ -196,10 +172,8 @@ Sample evaluate_node(const ir::Graph& g, ir::NodeId id, const Vec3& p) {
       }
       return acc;
     }
-    // The primitive catalogue: catalogue_distance above.
-    case Kind::Cone: case Kind::CappedCone: case Kind::RoundCone: case Kind::Ellipsoid: case Kind::Octahedron:
-    case Kind::HexPrism: case Kind::TriPrism: case Kind::Link: case Kind::RoundedCylinder: case Kind::Pyramid:
-    case Kind::Triangle: case Kind::Quad: case Kind::BoxFrame: break;
+    // Described kinds (sdfc/kinds/): their description above.
+    default: break;
     // Domain operations and blends: domain_evaluate above.
     case Kind::Repeat: case Kind::Mirror: case Kind::PolarRepeat: case Kind::Symmetry: case Kind::Twist:
     case Kind::Bend: case Kind::Elongate: case Kind::Round: case Kind::Onion: case Kind::Shell:

@@ -2,17 +2,13 @@
 // render.normals: dual — the kinds whose distance the emitter can
 // differentiate exactly (forward mode: each node carries its gradient).
 #include "sdfc/ir/node_kind.hpp"
+#include "sdfc/kinds/registry.hpp"
 
 namespace sdfc::ir {
 
 inline bool supports_dual_normals(Kind k) {
+  if (const kinds::Description* d = kinds::find(k)) return d->dual_normals;
   switch (k) {
-    case Kind::Sphere:
-    case Kind::Box:
-    case Kind::Torus:
-    case Kind::Plane:
-    case Kind::Cylinder:
-    case Kind::Capsule:
     case Kind::Translate:
     case Kind::Rotate:
     case Kind::Scale:

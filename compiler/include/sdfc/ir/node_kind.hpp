@@ -7,7 +7,7 @@ namespace sdfc::ir {
 
 enum class Kind : uint16_t {
 #define NODE(e, name, cat, arity, params, fn) e,
-#include "sdfc/ir/node_kinds.def"
+#include "sdfc/ir/kind_table.def"  // generated: compiler/kinds.cmake
 #undef NODE
 };
 

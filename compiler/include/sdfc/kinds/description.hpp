@@ -1,0 +1,65 @@
+#pragma once
+// One description per node kind (compiler/src/kinds/, one file per kind or
+// small family): its YAML form, its parameters by name, its properties, its
+// stdlib call, its double-precision distance and an example. The passes,
+// the emitter and the reference look a kind up here instead of switching
+// over Kind. A description file starts with its SDFC_KIND line, the kind's
+// row of the one kind table (compiler/kinds.cmake collects them):
+//   SDFC_KIND(Enum, id, "printed name", Category, arity, "param names", "stdlib function")
+#include <array>
+#include <cstring>
+#include <string_view>
+#include <type_traits>
+#include <vector>
+
+#include "sdfc/ir/graph.hpp"
+
+namespace sdfc::kinds {
+
+class Lowering;  // sdfc/kinds/lowering.hpp
+using V3 = std::array<double, 3>;
+
+// Proves the generated table saw this file's SDFC_KIND line.
+#define SDFC_KIND(e, id, name, cat, arity, params, fn) \
+  static_assert(static_cast<int>(::sdfc::ir::Kind::e) == (id), "kind table out of date: " #e);
+
+// A kind's parameters as a struct of named doubles and V3s, in the order
+// of Node::params: view<P>(n) reads them, params_of(p) writes them.
+template <class P>
+P view(const ir::Node& n) {
+  static_assert(std::is_trivially_copyable_v<P> && sizeof(P) % sizeof(double) == 0);
+  P p{};
+  std::memcpy(&p, n.params.data(), std::min(sizeof(P), n.params.size() * sizeof(double)));
+  return p;
+}
+template <class P>
+std::vector<double> params_of(const P& p) {
+  std::vector<double> v(sizeof(P) / sizeof(double));
+  std::memcpy(v.data(), &p, sizeof(P));
+  return v;
+}
+template <class P>
+constexpr size_t count_of() { return sizeof(P) / sizeof(double); }
+
+struct Description {
+  ir::Kind kind;
+  std::string_view yaml;     // the key a scene writes
+  // One geometry node in YAML flow style: the tests render it, docs show it.
+  std::string_view example;
+  size_t param_count;        // count_of<P>(): checked against the table row
+  // Reads the node's body (a map) and makes its node; kNoNode after an error.
+  ir::NodeId (*lower)(Lowering&);
+  // Bounds, class, Lipschitz constant and cost (infer_properties).
+  ir::Props (*props)(const ir::Node&);
+  // The stdlib call's arguments after the point, by parameter name from the
+  // table row; "a" stands for ax, ay, az (a vec3). The function is the row's.
+  std::string_view call_args;
+  // The distance in double (the reference evaluator, the tests' oracle).
+  double (*distance)(const ir::Node&, const V3& p);
+  bool dual_normals = false;  // render.normals: dual differentiates it
+  // The stdlib function giving distance and gradient (same arguments, then
+  // the gradient's address); empty when there is none.
+  std::string_view gradient_function = {};
+};
+
+}  // namespace sdfc::kinds

@@ -1,0 +1,21 @@
+#pragma once
+// The kinds with a description, from the one generated table. The first
+// use checks every description (a missing part throws, naming the kind).
+#include <string_view>
+#include <vector>
+
+#include "sdfc/kinds/description.hpp"
+
+namespace sdfc::kinds {
+
+const std::vector<const Description*>& all();           // in kind id order
+const Description* find(ir::Kind k);                    // null: not described
+const Description* find(std::string_view yaml);         // by the key scenes write
+// One argument of the stdlib call: parameter `index`, a real or (width 3) a vec3.
+struct CallArg {
+  size_t index;
+  int width;
+};
+const std::vector<CallArg>& call_args(ir::Kind k);
+
+}  // namespace sdfc::kinds

@@ -1,0 +1,52 @@
+// box_frame: the twelve edges of a box, as square bars.
+#include <fmt/format.h>
+
+#include "shape_math.hpp"
+
+SDFC_KIND(BoxFrame, 37, "box_frame", Primitive, 0, "hx,hy,hz,edge", "sd_box_frame")
+
+namespace sdfc::kinds {
+namespace {
+using namespace math;
+using frontend::Range;
+
+struct BoxFrameP {
+  V3 h;  // half extents
+  double edge;
+};
+
+ir::NodeId lower(Lowering& l) {
+  frontend::MapReader m = l.map({"size", "edge"});
+  frontend::Vec3d size = m.vec3("size", {1, 1, 1}, Range::positive());
+  double edge = m.number("edge", 0.05, Range::positive());
+  double smallest = std::min({size[0], size[1], size[2]});
+  if (edge >= smallest / 2)
+    l.fail(m, "edge", fmt::format("box_frame.edge: {} must be less than half the smallest side ({})", edge, smallest / 2));
+  return l.make(BoxFrameP{{size[0] / 2, size[1] / 2, size[2] / 2}, edge});
+}
+
+ir::Props props(const ir::Node& n) {
+  V3 h = view<BoxFrameP>(n).h;
+  return leaf(box(-h[0], -h[1], -h[2], h[0], h[1], h[2]), 45);
+}
+
+double distance(const ir::Node& n, const V3& pa) {
+  auto f = view<BoxFrameP>(n);
+  V b = at(f.h);
+  double e = f.edge;
+  V p = {std::fabs(pa[0]) - b.x, std::fabs(pa[1]) - b.y, std::fabs(pa[2]) - b.z};
+  V q = {std::fabs(p.x + e) - e, std::fabs(p.y + e) - e, std::fabs(p.z + e) - e};
+  auto bar = [](double x, double y, double z) {
+    return len({std::max(x, 0.0), std::max(y, 0.0), std::max(z, 0.0)}) + std::min(std::max({x, y, z}), 0.0);
+  };
+  return std::min({bar(p.x, q.y, q.z), bar(q.x, p.y, q.z), bar(q.x, q.y, p.z)});
+}
+
+}  // namespace
+
+namespace described {
+extern const Description BoxFrame{ir::Kind::BoxFrame, "box_frame", "{box_frame: {size: [1.0, 0.8, 0.6], edge: 0.08}}",
+                                  count_of<BoxFrameP>(), lower, props, "h, edge", distance};
+}
+
+}  // namespace sdfc::kinds

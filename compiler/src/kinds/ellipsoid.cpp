@@ -1,0 +1,41 @@
+// ellipsoid: radii along x, y, z. No closed form: a bound (Quilez).
+#include "shape_math.hpp"
+
+SDFC_KIND(Ellipsoid, 28, "ellipsoid", Primitive, 0, "rx,ry,rz", "sd_ellipsoid")
+
+namespace sdfc::kinds {
+namespace {
+using namespace math;
+
+struct EllipsoidP {
+  V3 r;
+};
+
+ir::NodeId lower(Lowering& l) {
+  frontend::MapReader m = l.map({"radii"});
+  frontend::Vec3d r = m.vec3("radii", {1, 0.5, 0.25}, frontend::Range::positive());
+  return l.make(EllipsoidP{r});
+}
+
+ir::Props props(const ir::Node& n) {
+  V3 r = view<EllipsoidP>(n).r;
+  return leaf(box(-r[0], -r[1], -r[2], r[0], r[1], r[2]), 20, ir::DistanceClass::Bound);
+}
+
+double distance(const ir::Node& n, const V3& pa) {
+  V3 r = view<EllipsoidP>(n).r;
+  V p = at(pa);
+  double k0 = len({p.x / r[0], p.y / r[1], p.z / r[2]});
+  double k1 = len({p.x / (r[0] * r[0]), p.y / (r[1] * r[1]), p.z / (r[2] * r[2])});
+  double rmin = std::min({r[0], r[1], r[2]});
+  return std::max(k1 > 0 ? k0 * (k0 - 1) / k1 : 0.0, (k0 - 1) * rmin);
+}
+
+}  // namespace
+
+namespace described {
+extern const Description Ellipsoid{ir::Kind::Ellipsoid, "ellipsoid", "{ellipsoid: {radii: [0.8, 0.5, 0.3]}}",
+                                   count_of<EllipsoidP>(), lower, props, "r", distance};
+}
+
+}  // namespace sdfc::kinds

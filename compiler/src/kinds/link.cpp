@@ -1,0 +1,46 @@
+// link: a chain link, a torus stretched along y.
+#include <fmt/format.h>
+
+#include "shape_math.hpp"
+
+SDFC_KIND(Link, 32, "link", Primitive, 0, "half_length,major,minor", "sd_link")
+
+namespace sdfc::kinds {
+namespace {
+using namespace math;
+using frontend::Range;
+
+struct LinkP {
+  double half_length, major, minor;
+};
+
+ir::NodeId lower(Lowering& l) {
+  frontend::MapReader m = l.map({"length", "major_radius", "minor_radius"});
+  double length = m.number("length", 0.5, Range::non_negative());
+  double major = m.number("major_radius", 0.4, Range::positive());
+  double minor = m.number("minor_radius", 0.1, Range::positive());
+  if (minor >= major)
+    l.fail(m, "minor_radius", fmt::format("link.minor_radius: {} must be less than major_radius ({})", minor, major));
+  return l.make(LinkP{length / 2, major, minor});
+}
+
+ir::Props props(const ir::Node& n) {
+  auto k = view<LinkP>(n);
+  double r = k.major + k.minor;
+  return leaf(box(-r, -k.half_length - r, -k.minor, r, k.half_length + r, k.minor), 14);
+}
+
+double distance(const ir::Node& n, const V3& p) {
+  auto k = view<LinkP>(n);
+  double y = std::max(std::fabs(p[1]) - k.half_length, 0.0);
+  return len2(len2(p[0], y) - k.major, p[2]) - k.minor;
+}
+
+}  // namespace
+
+namespace described {
+extern const Description Link{ir::Kind::Link, "link", "{link: {length: 0.6, major_radius: 0.35, minor_radius: 0.1}}",
+                              count_of<LinkP>(), lower, props, "half_length, major, minor", distance};
+}
+
+}  // namespace sdfc::kinds

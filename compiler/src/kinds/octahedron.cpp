@@ -1,0 +1,41 @@
+// octahedron: |x| + |y| + |z| = size.
+#include "shape_math.hpp"
+
+SDFC_KIND(Octahedron, 29, "octahedron", Primitive, 0, "size", "sd_octahedron")
+
+namespace sdfc::kinds {
+namespace {
+using namespace math;
+
+struct OctahedronP {
+  double size;
+};
+
+ir::NodeId lower(Lowering& l) {
+  frontend::MapReader m = l.map({"size"});
+  return l.make(OctahedronP{m.number("size", 1, frontend::Range::positive())});
+}
+
+ir::Props props(const ir::Node& n) { return leaf(ir::Box3::cube(view<OctahedronP>(n).size), 28); }
+
+double distance(const ir::Node& n, const V3& pa) {
+  double s = view<OctahedronP>(n).size;
+  V p = {std::fabs(pa[0]), std::fabs(pa[1]), std::fabs(pa[2])};
+  double m = p.x + p.y + p.z - s;
+  V q;
+  if (3 * p.x < m) q = p;
+  else if (3 * p.y < m) q = {p.y, p.z, p.x};
+  else if (3 * p.z < m) q = {p.z, p.x, p.y};
+  else return m / std::sqrt(3.0);
+  double k = std::clamp(0.5 * (q.z - q.y + s), 0.0, s);
+  return len({q.x, q.y - s + k, q.z - k});
+}
+
+}  // namespace
+
+namespace described {
+extern const Description Octahedron{ir::Kind::Octahedron, "octahedron", "{octahedron: {size: 0.7}}",
+                                    count_of<OctahedronP>(), lower, props, "size", distance};
+}
+
+}  // namespace sdfc::kinds

@@ -1,0 +1,46 @@
+// rounded_cylinder: a cylinder about z with rounded rims.
+#include <fmt/format.h>
+
+#include "shape_math.hpp"
+
+SDFC_KIND(RoundedCylinder, 33, "rounded_cylinder", Primitive, 0, "radius,half_height,edge_radius", "sd_rounded_cylinder")
+
+namespace sdfc::kinds {
+namespace {
+using namespace math;
+using frontend::Range;
+
+struct RoundedCylinderP {
+  double radius, half_height, edge_radius;
+};
+
+ir::NodeId lower(Lowering& l) {
+  frontend::MapReader m = l.map({"radius", "height", "edge_radius"});
+  double radius = m.number("radius", 0.5, Range::positive()), height = m.number("height", 1, Range::positive());
+  double edge = m.number("edge_radius", 0.1, Range::non_negative());
+  if (edge > std::min(radius, height / 2))
+    l.fail(m, "edge_radius", fmt::format("rounded_cylinder.edge_radius: {} is more than min(radius, height/2) = {}",
+                                         edge, std::min(radius, height / 2)));
+  return l.make(RoundedCylinderP{radius, height / 2, edge});
+}
+
+ir::Props props(const ir::Node& n) {
+  auto c = view<RoundedCylinderP>(n);
+  return leaf(box(-c.radius, -c.radius, -c.half_height, c.radius, c.radius, c.half_height), 16);
+}
+
+double distance(const ir::Node& n, const V3& p) {
+  auto c = view<RoundedCylinderP>(n);
+  return extrude(len2(p[0], p[1]) - c.radius + c.edge_radius, p[2], c.half_height - c.edge_radius) - c.edge_radius;
+}
+
+}  // namespace
+
+namespace described {
+extern const Description RoundedCylinder{ir::Kind::RoundedCylinder, "rounded_cylinder",
+                                         "{rounded_cylinder: {radius: 0.5, height: 0.9, edge_radius: 0.15}}",
+                                         count_of<RoundedCylinderP>(), lower, props,
+                                         "radius, half_height, edge_radius", distance};
+}
+
+}  // namespace sdfc::kinds

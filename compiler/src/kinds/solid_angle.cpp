@@ -1,0 +1,50 @@
+// solid_angle: the part of a ball inside a cone about +z with its apex at
+// the centre (Quilez's sdSolidAngle, z up). Exact.
+#include <numbers>
+
+#include "shape_math.hpp"
+
+SDFC_KIND(SolidAngle, 54, "solid_angle", Primitive, 0, "sin_angle,cos_angle,radius", "sd_solid_angle")
+
+namespace sdfc::kinds {
+namespace {
+using namespace math;
+using frontend::Range;
+
+struct SolidAngleP {
+  double sin_angle, cos_angle, radius;
+};
+
+ir::NodeId lower(Lowering& l) {
+  frontend::MapReader m = l.map({"angle", "radius"});
+  // The cone's half-angle in degrees: 180 is the whole ball.
+  double angle = m.number("angle", 30, Range::positive(180)), radius = m.number("radius", 1, Range::positive());
+  double a = angle * std::numbers::pi / 180;
+  return l.make(SolidAngleP{std::sin(a), std::cos(a), radius});
+}
+
+ir::Props props(const ir::Node& n) {
+  auto s = view<SolidAngleP>(n);
+  // Past 90 degrees the ball's equator is inside: the full radius across.
+  double across = s.cos_angle < 0 ? s.radius : s.radius * s.sin_angle;
+  double below = std::min(0.0, s.radius * s.cos_angle);
+  return leaf(box(-across, -across, below, across, across, s.radius), 22);
+}
+
+double distance(const ir::Node& n, const V3& p) {
+  auto s = view<SolidAngleP>(n);
+  double qx = len2(p[0], p[1]), qy = p[2];
+  double l = len2(qx, qy) - s.radius;
+  double t = std::clamp(qx * s.sin_angle + qy * s.cos_angle, 0.0, s.radius);
+  double m = len2(qx - s.sin_angle * t, qy - s.cos_angle * t);
+  return std::max(l, m * sgn(s.cos_angle * qx - s.sin_angle * qy));
+}
+
+}  // namespace
+
+namespace described {
+extern const Description SolidAngle{ir::Kind::SolidAngle, "solid_angle", "{solid_angle: {angle: 40, radius: 0.8}}",
+                                    count_of<SolidAngleP>(), lower, props, "sin_angle, cos_angle, radius", distance};
+}
+
+}  // namespace sdfc::kinds
