@@ -163,18 +163,8 @@ int run_render(RenderArgs a) {
   if (a.repeat > 0) return render_repeated({&renderer, &m.plan, a.tile, a.repeat, a.output, a.aovs, &g_cancel});
 
   const bool sequence = !a.frames.empty();
-  if (frames.back() / a.fps > expr::kMaxTime)  // animated values are checked for t in [0, kMaxTime] only
-    throw std::invalid_argument(fmt::format("--frames: frame {} is at t = {:.3g} s at {} fps, past the {:g} s over which "
-                                            "animated values are checked",
-                                            frames.back(), frames.back() / a.fps, a.fps, expr::kMaxTime));
   const bool video = is_video(format);
-  if (video && has_frame_field(a.output))
-    throw std::invalid_argument(fmt::format("-o '{}': a video is one file; drop the frame-number field", a.output));
-  sequence_number(frames, 0, a.number_from);  // checks --number-from
-  if (!video && sequence && frames.size() > 1 && !has_frame_field(a.output))
-    throw std::invalid_argument(fmt::format(
-        "-o '{}': {} frames need one frame-number field in the name, e.g. out/frame_%04d.png "
-        "(write %% for a '%')", a.output, frames.size()));
+  check_sequence_output(frames, sequence, a.fps, a.number_from, a.output, video);
   OfflineOutput out;
   out.format = format;
   out.bit_depth = choices.bit_depth;

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "offline_render.hpp"
+#include "sdfc/expr/expr.hpp"
 
 namespace sdfc::cli {
 
@@ -110,6 +111,21 @@ int sequence_number(const FrameRange& frames, std::int64_t index, const std::str
   if (number_from == "0") return static_cast<int>(index);
   if (number_from == "first") return static_cast<int>(frames.first + index);
   throw std::invalid_argument(fmt::format("--number-from '{}': expected 0 or first", number_from));
+}
+
+void check_sequence_output(const FrameRange& frames, bool sequence, double fps, const std::string& number_from,
+                           const std::string& output, bool video) {
+  if (frames.back() / fps > expr::kMaxTime)  // animated values are checked for t in [0, kMaxTime] only
+    throw std::invalid_argument(fmt::format("--frames: frame {} is at t = {:.3g} s at {} fps, past the {:g} s over which "
+                                            "animated values are checked",
+                                            frames.back(), frames.back() / fps, fps, expr::kMaxTime));
+  if (video && has_frame_field(output))
+    throw std::invalid_argument(fmt::format("-o '{}': a video is one file; drop the frame-number field", output));
+  sequence_number(frames, 0, number_from);  // checks --number-from
+  if (!video && sequence && frames.size() > 1 && !has_frame_field(output))
+    throw std::invalid_argument(fmt::format(
+        "-o '{}': {} frames need one frame-number field in the name, e.g. out/frame_%04d.png "
+        "(write %% for a '%')", output, frames.size()));
 }
 
 }  // namespace sdfc::cli

@@ -33,4 +33,10 @@ bool has_frame_field(const std::string& pattern);
 // std::invalid_argument for anything else.
 int sequence_number(const FrameRange& frames, std::int64_t index, const std::string& number_from);
 
+// Refuses, with std::invalid_argument, frames past the time over which
+// animated values are checked, a bad --number-from, a video name with a
+// frame field and a sequence name without one.
+void check_sequence_output(const FrameRange& frames, bool sequence, double fps, const std::string& number_from,
+                           const std::string& output, bool video);
+
 }  // namespace sdfc::cli

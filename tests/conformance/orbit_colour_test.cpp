@@ -16,6 +16,7 @@
 #include "sdfc/codegen/emit_opencl.hpp"
 #include "sdfc/reference/evaluator.hpp"
 #include "sdfc_test_support.hpp"
+#include "trap_probe.hpp"
 
 namespace sdfc {
 namespace {
@@ -52,36 +53,6 @@ std::string scene(const Case& c, const char* source, bool dbl) {
       dbl ? "double" : "float", source, c.node);
 }
 
-std::string probe_kernel(const ir::Module& m, int width) {
-  return codegen::emit_opencl(m, {width, false}).source + R"(
-__kernel void trap_probe(__global const float* px, __global const float* py, __global const float* pz,
-                         __global float* out)
-{
-    const int i = get_global_id(0) * SDFC_WIDTH;
-    vec3 p = v3(LOAD_REAL(px + i), LOAD_REAL(py + i), LOAD_REAL(pz + i));
-    STORE_REAL(scene_trap(p), out + i);
-}
-)";
-}
-
-// Points on rays into the set, from a little outside the surface up to it.
-std::vector<V3> near_surface(const ir::Module& m, double radius, std::mt19937_64& rng) {
-  std::vector<V3> pts;
-  for (int attempt = 0; attempt < 400 && pts.size() < 1200; ++attempt) {
-    auto [o, rd] = test::random_ray(rng, {0, 0, 0}, 2.5 * radius, 0.4 * radius);
-    auto f = [&](const V3& x) { return reference::distance(m, x); };
-    if (auto t = test::trace_to_surface(f, o, rd, 1e-4 * radius, 5 * radius))
-      for (int k = 0; k < 12; ++k) pts.push_back(test::to_float_point(add(o, mul(rd, *t - k * 2e-4 * radius))));
-  }
-  return pts;
-}
-
-const ir::Node& fractal_of(const ir::Module& m) {
-  for (ir::NodeId id : m.graph->postorder(m.root))
-    if (ir::info(m.graph->node(id).kind).category == ir::Category::Fractal) return m.graph->node(id);
-  throw std::logic_error("no fractal in the scene");
-}
-
 class OrbitColour : public ::testing::TestWithParam<std::tuple<Case, int, bool>> {};
 
 TEST_P(OrbitColour, TrapAndIterationMatchTheReference) {
@@ -90,10 +61,10 @@ TEST_P(OrbitColour, TrapAndIterationMatchTheReference) {
     SCOPED_TRACE(source);
     ir::Module m = test::compile_text(scene(c, source, dbl));
     std::mt19937_64 rng(std::hash<std::string>{}(c.name));
-    std::vector<V3> pts = near_surface(m, c.radius, rng);
+    std::vector<V3> pts = test::points_near_surface(m, c.radius, rng, 400, 1200, 12);
     ASSERT_GE(pts.size(), 1000u) << "too few rays met the set";
-    std::vector<float> got = test::run_point_kernel(probe_kernel(m, width), "trap_probe", pts, width);
-    const ir::Node& f = fractal_of(m);
+    std::vector<float> got = test::run_point_kernel(test::trap_probe_kernel(m, width), "trap_probe", pts, width);
+    const ir::Node& f = test::fractal_of(m);
     const bool iteration = std::string(source) == "iteration";
     int close = 0, finite = 0;
     double lo = 1e30, hi = -1e30;

@@ -14,6 +14,7 @@
 #include "sdfc/codegen/emit_opencl.hpp"
 #include "sdfc/reference/evaluator.hpp"
 #include "sdfc_test_support.hpp"
+#include "trap_probe.hpp"
 
 namespace sdfc {
 namespace {
@@ -59,35 +60,6 @@ std::string scene(const Fractal& f, const Shape& s, bool dbl) {
       dbl ? "double" : "float", s.keys, f.node);
 }
 
-std::string probe_kernel(const ir::Module& m, int width) {
-  return codegen::emit_opencl(m, {width, false}).source + R"(
-__kernel void trap_probe(__global const float* px, __global const float* py, __global const float* pz,
-                         __global float* out)
-{
-    const int i = get_global_id(0) * SDFC_WIDTH;
-    vec3 p = v3(LOAD_REAL(px + i), LOAD_REAL(py + i), LOAD_REAL(pz + i));
-    STORE_REAL(scene_trap(p), out + i);
-}
-)";
-}
-
-std::vector<V3> near_surface(const ir::Module& m, double radius, std::mt19937_64& rng) {
-  std::vector<V3> pts;
-  for (int attempt = 0; attempt < 300 && pts.size() < 600; ++attempt) {
-    auto [o, rd] = test::random_ray(rng, {0, 0, 0}, 2.5 * radius, 0.4 * radius);
-    auto f = [&](const V3& x) { return reference::distance(m, x); };
-    if (auto t = test::trace_to_surface(f, o, rd, 1e-4 * radius, 5 * radius))
-      for (int k = 0; k < 6; ++k) pts.push_back(test::to_float_point(add(o, mul(rd, *t - k * 2e-4 * radius))));
-  }
-  return pts;
-}
-
-const ir::Node& fractal_of(const ir::Module& m) {
-  for (ir::NodeId id : m.graph->postorder(m.root))
-    if (ir::info(m.graph->node(id).kind).category == ir::Category::Fractal) return m.graph->node(id);
-  throw std::logic_error("no fractal in the scene");
-}
-
 class TrapShapes : public ::testing::TestWithParam<std::tuple<Fractal, Shape, bool>> {};
 
 TEST_P(TrapShapes, KernelTrapMatchesTheReference) {
@@ -96,15 +68,15 @@ TEST_P(TrapShapes, KernelTrapMatchesTheReference) {
   const ir::TrapShape& shape = m.plan.materials.at(1).trap_shape;
   ASSERT_NE(shape.kind, ir::TrapShape::Kind::Cross);
   std::mt19937_64 rng(std::hash<std::string>{}(f.name + s.name));
-  std::vector<V3> pts = near_surface(m, f.radius, rng);
+  std::vector<V3> pts = test::points_near_surface(m, f.radius, rng, 300, 600, 6);
   ASSERT_GE(pts.size(), 500u) << "too few rays met the set";
   const int width = dbl ? 8 : 16;
-  std::vector<float> got = test::run_point_kernel(probe_kernel(m, width), "trap_probe", pts, width);
+  std::vector<float> got = test::run_point_kernel(test::trap_probe_kernel(m, width), "trap_probe", pts, width);
   int close = 0, finite = 0, moved = 0;
   double lo = 1e30, hi = -1e30;
   for (size_t i = 0; i < pts.size(); ++i) {
-    double want = reference::orbit_colour(fractal_of(m), pts[i], shape)->trap;
-    double cross = reference::orbit_colour(fractal_of(m), pts[i])->trap;
+    double want = reference::orbit_colour(test::fractal_of(m), pts[i], shape)->trap;
+    double cross = reference::orbit_colour(test::fractal_of(m), pts[i])->trap;
     lo = std::min(lo, want), hi = std::max(hi, want);
     finite += std::isfinite(got[i]);
     moved += std::fabs(want - cross) > 1e-3;

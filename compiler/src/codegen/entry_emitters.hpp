@@ -12,6 +12,9 @@
 
 namespace sdfc::codegen::detail {
 
+// Clips the ray to the scene's bounds as t0, t1 (segment_emitter.cpp);
+// false, emitting nothing, for an unbounded scene.
+bool bounds_clip(CodeWriter& w, const ir::Module& m, const Literals& lit, std::set<std::string>& used);
 std::string segment_function(const ir::Module& m, const Literals& lit, std::set<std::string>& used);
 std::string radiance_function(const ir::Module& m, std::set<std::string>& used);
 // The path integrator's functions (render.integrator: path): the material

@@ -28,19 +28,7 @@ std::string hit_function(const ir::Module& m, const Literals& lit, std::set<std:
   w.line("mask sdfc_path_hit(TIME_PARAM vec3 ro, vec3 rd, mask active, real pixel_angle, real from, real jitter,");
   w.line("                   real* t_out, vec3* n_out, real* id_out, vec3* albedo_out, real* steps_out, mask* escaped)");
   w.open("{");
-  if (const auto& bounds = m.analyses.ray_bounds) {
-    const ir::Box3& b = bounds->box;
-    used.insert("ray_box");
-    w.line("real t0, t1;");
-    w.line(fmt::format("active = active & ray_box(ro, rd, {}, {}, &t0, &t1);", lit.vec3(b.lo), lit.vec3(b.hi)));
-    if (bounds->has_sphere) {
-      used.insert("ray_sphere");
-      w.line("real s0, s1;");
-      w.line(fmt::format("active = active & ray_sphere(ro, rd, {}, {}, &s0, &s1);", lit.vec3(bounds->center),
-                         lit.real(bounds->radius)));
-      w.line("t0 = fmax(t0, s0);");
-      w.line("t1 = fmin(t1, s1);");
-    }
+  if (bounds_clip(w, m, lit, used)) {
     w.line("t0 = fmax(t0, from);");
     w.line(fmt::format("t1 = fmin(t1, from + {});", lit.real(s.max_distance)));
   } else {
@@ -189,11 +177,7 @@ std::string path_functions(const ir::Module& m, const ir::RenderPlan& plan, cons
       w.line(fmt::format("real tmax = {};", lit.typed(plan.march.max_distance)));
     } else {
       w.line(fmt::format("// light {}: point, falls off with the squared distance", i));
-      std::string pos = lit.vec3(l.position);
-      if (l.position_anim[0] || l.position_anim[1] || l.position_anim[2])
-        pos = fmt::format("v3({}, {}, {})", animated(l.position_anim[0], l.position[0], lit),
-                          animated(l.position_anim[1], l.position[1], lit), animated(l.position_anim[2], l.position[2], lit));
-      w.line(fmt::format("vec3 l = v3_sub({}, p);", pos));
+      w.line(fmt::format("vec3 l = v3_sub({}, p);", light_position(l, lit)));
       w.line("real dist2 = fmax(v3_dot(l, l), K(1e-8f));");
       w.line("l = v3_scale(l, rsqrt(dist2));");
       w.line(fmt::format("vec3 e = v3_scale({}, 1.0f / dist2);", rad));

@@ -10,6 +10,28 @@
 
 namespace sdfc::codegen::detail {
 
+// Clips the ray to the scene's bounds (the box, and a fractal's bounding
+// ball) as t0, t1; false for an unbounded scene (nothing emitted).
+bool bounds_clip(CodeWriter& w, const ir::Module& m, const Literals& lit, std::set<std::string>& used) {
+  const auto& bounds = m.analyses.ray_bounds;
+  if (!bounds) return false;
+  const ir::Box3& b = bounds->box;
+  used.insert("ray_box");
+  w.line("// march only where the ray crosses the scene's bounds (inferred from the IR)");
+  w.line("real t0, t1;");
+  w.line(fmt::format("active = active & ray_box(ro, rd, {}, {}, &t0, &t1);", lit.vec3(b.lo), lit.vec3(b.hi)));
+  if (bounds->has_sphere) {
+    used.insert("ray_sphere");
+    w.line("// and inside the fractal's bounding ball");
+    w.line("real s0, s1;");
+    w.line(fmt::format("active = active & ray_sphere(ro, rd, {}, {}, &s0, &s1);", lit.vec3(bounds->center),
+                       lit.real(bounds->radius)));
+    w.line("t0 = fmax(t0, s0);");
+    w.line("t1 = fmin(t1, s1);");
+  }
+  return true;
+}
+
 // One ray segment: bounds, march, shading at the hit, background on a miss,
 // and the effects that belong to a segment (AO, glow, fog). The primary ray
 // and every reflection bounce run through it.
@@ -27,21 +49,7 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
   w.line(fmt::format("                  real* t_out, mask* hit_out, vec3* n_out, real* mat_out, real* steps_out{})",
                      refl_out ? ", real* refl_out" : ""));
   w.open("{");
-  if (const auto& bounds = m.analyses.ray_bounds) {
-    const ir::Box3& b = bounds->box;
-    used.insert("ray_box");
-    w.line("// march only where the ray crosses the scene's bounds (inferred from the IR)");
-    w.line("real t0, t1;");
-    w.line(fmt::format("active = active & ray_box(ro, rd, {}, {}, &t0, &t1);", lit.vec3(b.lo), lit.vec3(b.hi)));
-    if (bounds->has_sphere) {
-      used.insert("ray_sphere");
-      w.line("// and inside the fractal's bounding ball");
-      w.line("real s0, s1;");
-      w.line(fmt::format("active = active & ray_sphere(ro, rd, {}, {}, &s0, &s1);", lit.vec3(bounds->center),
-                         lit.real(bounds->radius)));
-      w.line("t0 = fmax(t0, s0);");
-      w.line("t1 = fmin(t1, s1);");
-    }
+  if (bounds_clip(w, m, lit, used)) {
     w.line(fmt::format("t1 = fmin(t1, {});", lit.real(s.max_distance)));
   } else {
     w.line("// the scene is unbounded (it holds a plane): march the whole range");

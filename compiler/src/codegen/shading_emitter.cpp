@@ -22,6 +22,12 @@ std::string where(const SourceLoc& loc) {
 // The shadow factor towards a light (empty when the light casts none).
 // With the scene's bounds, the march stops where the shadow ray leaves them:
 // nothing beyond can block the light.
+std::string light_position(const ir::Light& l, const Literals& lit) {
+  if (!l.position_anim[0] && !l.position_anim[1] && !l.position_anim[2]) return lit.vec3(l.position);
+  return fmt::format("v3({}, {}, {})", animated(l.position_anim[0], l.position[0], lit),
+                     animated(l.position_anim[1], l.position[1], lit), animated(l.position_anim[2], l.position[2], lit));
+}
+
 std::string shadow_call(const ir::Light& l, const std::string& to_light, std::string tmax, const Literals& lit,
                         const ir::RayBounds* bounds, std::set<std::string>& used) {
   if (l.shadows == ir::Light::Shadows::None) return "";
@@ -141,11 +147,7 @@ std::string emit_shading(const ir::RenderPlan& plan, const ir::Analyses& facts, 
       any_direct = true;
       w.line(fmt::format("// light {}: point, falls off with the squared distance ({})", i, where(l.loc)));
       w.open("{");
-      std::string pos = lit.vec3(l.position);
-      if (l.position_anim[0] || l.position_anim[1] || l.position_anim[2])
-        pos = fmt::format("v3({}, {}, {})", animated(l.position_anim[0], l.position[0], lit),
-                          animated(l.position_anim[1], l.position[1], lit), animated(l.position_anim[2], l.position[2], lit));
-      w.line(fmt::format("vec3 l = v3_sub({}, p);", pos));
+      w.line(fmt::format("vec3 l = v3_sub({}, p);", light_position(l, lit)));
       w.line("real dist2 = fmax(v3_dot(l, l), K(1e-8f));");
       w.line("l = v3_scale(l, rsqrt(dist2));");
       std::string sh = shadow_call(l, "l", "sqrt(dist2)", lit, bounds, used);

@@ -19,6 +19,8 @@ namespace sdfc::codegen::detail {
 std::string emit_material_table(const ir::RenderPlan& plan, const ir::Analyses& facts, const Literals& lit);
 // The shadow factor towards a light as a call (empty when it casts none);
 // the caller's scope holds shadow_origin, footprint, hit and n.
+// A point light's position, as literals or, where animated, expressions of time.
+std::string light_position(const ir::Light& l, const Literals& lit);
 std::string shadow_call(const ir::Light& l, const std::string& to_light, std::string tmax, const Literals& lit,
                         const ir::RayBounds* bounds, std::set<std::string>& used);
 std::string emit_shading(const ir::RenderPlan& plan, const ir::Analyses& facts, const Literals& lit,
