@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "sdfc/kinds/registry.hpp"
+
 namespace sdfc::cli {
 
 namespace {
@@ -58,10 +60,8 @@ Region scene_region(const ir::Module& m) {
 
 double default_iso(const ir::Module& m, double voxel) {
   for (ir::NodeId id : m.graph->postorder(m.root)) {
-    const ir::Kind k = m.graph->node(id).kind;
-    if (k == ir::Kind::Mandelbulb || k == ir::Kind::Juliabulb || k == ir::Kind::Mandelbox ||
-        k == ir::Kind::QuaternionJulia || k == ir::Kind::Hybrid)
-      return 0.5 * voxel;
+    const kinds::Description* d = kinds::find(m.graph->node(id).kind);
+    if (d && d->escape_time) return 0.5 * voxel;
   }
   return 0;
 }

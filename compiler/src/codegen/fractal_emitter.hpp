@@ -1,6 +1,7 @@
 #pragma once
 // Fractal nodes to OpenCL C: the call into the stdlib estimator with the
-// node's parameters as literals, or (hybrid) an orbit loop written inline.
+// node's parameters as literals, or (hybrid) an orbit loop written inline,
+// as each fractal's description (compiler/src/kinds/) writes it.
 #include <optional>
 #include <set>
 #include <string>
@@ -18,11 +19,6 @@ bool is_fractal(const ir::Node& n);
 std::string emit_fractal(const ir::Node& n, const std::string& p, const Literals& lit, CodeWriter& w,
                          std::set<std::string>& used);
 
-// The escape radius a Mandelbulb's or Juliabulb's estimator iterates to
-// (ir::bulb_estimator_radius), a literal or, for an animated power or
-// bailout, an expression of them.
-std::string bulb_estimator_radius(const ir::Node& n, const Literals& lit);
-
 // The values of the node's orbit from `p` (evaluated once per hit or pixel,
 // never in the march): its orbit trap, its smooth iteration count in [0, 1]
 // (an orbit-trap material's `source: iteration`), or its escape iteration
@@ -35,5 +31,10 @@ enum class OrbitValue { Trap, Smooth, Escape };
 // trap takes (trap_shape_emitter.hpp); none for the default shape.
 std::string emit_fractal_trap(const ir::Node& n, const std::string& p, const Literals& lit, CodeWriter& w,
                               std::set<std::string>& used, OrbitValue value, std::optional<size_t> shape = std::nullopt);
+
+// render.normals: dual: the direction of grad |z_n| at `p` (forward-mode
+// dual numbers through the orbit); "" for kinds without it.
+std::string emit_fractal_dual(const ir::Node& n, const std::string& p, const Literals& lit, CodeWriter& w,
+                              std::set<std::string>& used);
 
 }  // namespace sdfc::codegen::detail

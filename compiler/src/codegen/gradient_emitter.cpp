@@ -142,12 +142,9 @@ class GradientEmitter {
         }
         return v;
       }
-      case Kind::Mandelbulb:
-      case Kind::Juliabulb:
-      case Kind::Mandelbox:
-      case Kind::QuaternionJulia: return fractal(n, p);
     }
     const kinds::Description* d = kinds::find(n.kind);
+    if (d && d->emit_dual) return fractal(n, p);
     if (!d || d->gradient_function.empty())
       throw std::logic_error(fmt::format("dual normals reached '{}', which the front end should have refused",
                                            ir::info(n.kind).name));
@@ -159,33 +156,9 @@ class GradientEmitter {
   // of grad |z_n| from dual numbers through the orbit (a good estimator has
   // |grad d| ~ 1, so this is its gradient where it matters, at the surface).
   DG fractal(const ir::Node& n, const std::string& p) {
-    const auto& q = n.params;
-    auto r = [&](size_t i) { return lit_.real(q[i]); };
     DG v{var("d"), var("g")};
     w_.line(fmt::format("real {} = {};  // {}", v.d, emit_fractal(n, p, lit_, w_, used_), ir::info(n.kind).name));
-    std::string g;
-    switch (n.kind) {
-      case Kind::Mandelbulb:
-        g = fmt::format("gn_mandelbulb({}, {}, {}, {}, 0, v3_splat(0.0f))", p, r(0), int(q[1]), bulb_estimator_radius(n, lit_));
-        used_.insert("gn_mandelbulb");
-        break;
-      case Kind::Juliabulb:
-        g = fmt::format("gn_mandelbulb({}, {}, {}, {}, 1, {})", p, r(0), int(q[1]), bulb_estimator_radius(n, lit_),
-                        lit_.vec3({q[3], q[4], q[5]}));
-        used_.insert("gn_mandelbulb");
-        break;
-      case Kind::Mandelbox:
-        g = fmt::format("gn_mandelbox({}, {}, {}, {}, {}, {}, {}, {}, {})", p, r(0), lit_.real(q[1] * q[1]),
-                        lit_.real(q[2] * q[2]), r(3), int(q[4]), int(q[5]), lit_.vec3({q[6], q[7], q[8]}),
-                        lit_.vec3({q[9], q[10], q[11]}));
-        used_.insert("gn_mandelbox");
-        break;
-      default:
-        g = fmt::format("gn_quaternion_julia({}, {}, {}, {}, {}, {}, {})", p, r(6), r(0), lit_.vec3({q[1], q[2], q[3]}),
-                        int(q[4]), int(q[5]), r(7));
-        used_.insert("gn_quaternion_julia");
-    }
-    w_.line(fmt::format("vec3 {} = {};  // the direction of grad |z_n|", v.g, g));
+    w_.line(fmt::format("vec3 {} = {};  // the direction of grad |z_n|", v.g, emit_fractal_dual(n, p, lit_, w_, used_)));
     return v;
   }
 

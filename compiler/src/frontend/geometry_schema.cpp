@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include "fractal_schema.hpp"
 #include "sdfc/ir/de_info.hpp"
 
 #include <cmath>
@@ -31,9 +30,11 @@ const std::vector<std::string_view>& geometry_kinds() {
     for (const kinds::Description* d : kinds::all())
       if (d->kind <= Kind::Capsule) v.push_back(d->yaml);
     v.insert(v.end(), combinators.begin(), combinators.end());
-    for (auto f : fractal_kinds()) v.push_back(f);
+    auto fractal = [](const kinds::Description* d) { return ir::info(d->kind).category == ir::Category::Fractal; };
+    for (const kinds::Description* d : kinds::all())  // the Juliabulb shares the mandelbulb's key
+      if (fractal(d) && d->kind != Kind::Juliabulb) v.push_back(d->yaml);
     for (const kinds::Description* d : kinds::all())
-      if (d->kind > Kind::Capsule) v.push_back(d->yaml);
+      if (d->kind > Kind::Capsule && !fractal(d)) v.push_back(d->yaml);
     v.push_back("segment");  // a second spelling of the capsule
     v.insert(v.end(), blend_kinds().begin(), blend_kinds().end());
     return v;
@@ -208,8 +209,6 @@ NodeId GeometryLowering::lower_kind(const SourceValue& key, const SourceValue& b
     double radius = m.number("radius", 0.1, Range::positive());
     return b_.make(Kind::Capsule, {a[0], a[1], a[2], bb[0], bb[1], bb[2], radius}, {}, at);
   }
-  for (auto f : fractal_kinds())
-    if (k == f) return lower_fractal(r_, b_, key, body);
   if (const kinds::Description* d = kinds::find(std::string_view(k))) {
     kinds::Lowering l(*d, r_, b_, key, body);
     return d->lower(l);

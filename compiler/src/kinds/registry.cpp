@@ -49,6 +49,8 @@ std::vector<CallArg> resolve(const Description& d) {
   return out;
 }
 
+}  // namespace
+
 // A description missing a part is a compiler bug: say which kind.
 void check(const Description& d) {
   const ir::KindInfo& k = ir::info(d.kind);
@@ -60,12 +62,23 @@ void check(const Description& d) {
   if (!d.lower) missing("lower");
   if (!d.props) missing("props");
   if (!d.distance) missing("reference distance");
-  if (k.stdlib_function.empty() || d.call_args.empty()) missing("stdlib call");
-  if (d.dual_normals && d.gradient_function.empty()) missing("gradient function (it claims dual normals)");
+  if (k.category == ir::Category::Fractal) {
+    // A fractal writes its own code, orbit and estimator summary.
+    if (!d.emit) missing("emit (its estimator's code)");
+    if (!d.emit_orbit) missing("emit_orbit (its orbit trap and iteration count)");
+    if (!d.orbit_colour) missing("reference orbit colour");
+    if (!d.de_summary) missing("de_summary");
+    if (d.dual_normals && !d.emit_dual) missing("emit_dual (it claims dual normals)");
+  } else {
+    if (k.stdlib_function.empty() || d.call_args.empty()) missing("stdlib call");
+    if (d.dual_normals && d.gradient_function.empty()) missing("gradient function (it claims dual normals)");
+  }
   if (d.param_count != k.params.size())
     throw std::logic_error(fmt::format("kind '{}': its parameter struct holds {} numbers, its table row names {}",
                                        k.name, d.param_count, k.params.size()));
 }
+
+namespace {
 
 struct Registry {
   std::vector<const Description*> list;
@@ -77,7 +90,7 @@ struct Registry {
     std::sort(list.begin(), list.end(), [](auto* a, auto* b) { return a->kind < b->kind; });
     for (const Description* d : list) {
       check(*d);
-      args[d->kind] = resolve(*d);
+      if (!d->call_args.empty()) args[d->kind] = resolve(*d);
     }
   }
 };
@@ -97,6 +110,8 @@ const Description* find(ir::Kind k) {
   return nullptr;
 }
 
+// The first by kind id: `mandelbulb` is the Mandelbulb's key, whose
+// lowering makes a Juliabulb when the scene gives `julia`.
 const Description* find(std::string_view yaml) {
   for (const Description* d : all())
     if (d->yaml == yaml) return d;

@@ -10,6 +10,7 @@
 #include <set>
 
 #include "fit_box.hpp"
+#include "sdfc/kinds/registry.hpp"
 #include "sdfc/ir/analyses.hpp"
 #include "sdfc/passes/passes.hpp"
 
@@ -100,7 +101,8 @@ std::optional<ir::RayBounds> ray_bounds(const ir::Module& m) {
   NodeId id = m.root;
   while (g.node(id).kind == Kind::Bounded || g.node(id).kind == Kind::Material) id = g.node(id).children[0];
   const ir::Node& n = g.node(id);
-  double radius = n.kind == Kind::Mandelbulb || n.kind == Kind::Juliabulb ? n.props.bounds.hi[0] : 0;
+  const kinds::Description* d = kinds::find(n.kind);
+  double radius = d && d->ball_bounds ? n.props.bounds.hi[0] : 0;
   if (radius > 0) {
     b.has_sphere = true;
     b.radius = radius * 1.01 + 1e-3;

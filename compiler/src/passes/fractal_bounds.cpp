@@ -23,7 +23,7 @@
 #include <queue>
 #include <unordered_map>
 
-#include "../reference/fractals.hpp"
+#include "sdfc/kinds/registry.hpp"
 #include "sdfc/reference/evaluator.hpp"
 
 namespace sdfc::passes::detail {
@@ -35,18 +35,18 @@ using ir::Kind;
 using V = std::array<double, 3>;
 
 constexpr int kLevels = 7;          // the finest cell: 1/128 of the box per axis
-// The share of the estimate the search believes: half, but all of a
-// hybrid's, whose linear estimate r / dr already stays well below the
-// distance (docs/scene-format.md, "hybrid").
-constexpr double kTrust = 0.5, kHybridTrust = 1.0;
+// The share of the estimate the search believes is the description's
+// bounds_trust: half, but all of a hybrid's, whose linear estimate r / dr
+// already stays well below the distance (docs/scene-format.md, "hybrid").
 // Estimator calls per face. A weak estimator (a hybrid's linear r / dr
 // clears little space) would otherwise refine thousands of cells; when the
 // budget runs out the face stays at the farthest cell still open, which
 // holds everything not yet cleared, so the bound stays conservative.
 constexpr int kBudget = 1500;
 
-bool tightened(Kind k) {
-  return k == Kind::Mandelbox || k == Kind::QuaternionJulia || k == Kind::Kifs || k == Kind::Hybrid;
+const kinds::Description* tightened(Kind k) {
+  const kinds::Description* d = kinds::find(k);
+  return d && d->bounds_trust > 0 ? d : nullptr;
 }
 
 // A cell: its level (0 = the whole box) and integer coordinates there.
@@ -58,10 +58,9 @@ struct Cell {
 class Search {
  public:
   Search(const ir::Graph& g, ir::NodeId id, const Box3& box) : g_(g), id_(id), box_(box) {
-    const ir::Node& n = g.node(id);
-    trust_ = n.kind == Kind::Hybrid ? kHybridTrust : kTrust;
-    jacobian_ = n.kind == Kind::Mandelbox && n.params[12] == 0 &&
-                (n.params[9] != 1 || n.params[10] != 1 || n.params[11] != 1);
+    const kinds::Description* d = kinds::find(g.node(id).kind);
+    trust_ = d->bounds_trust;
+    bounds_distance_ = d->bounds_distance;
   }
 
   // How far the surface reaches along axis `a`, towards + (`up`) or −.
@@ -103,8 +102,7 @@ class Search {
     }
     ++evaluations_;
     double diag = std::sqrt(half[0] * half[0] + half[1] * half[1] + half[2] * half[2]);
-    double d = jacobian_ ? reference::fractals::mandelbox_jacobian(centre, g_.node(id_).params)
-                         : reference::evaluate(g_, id_, centre).distance;
+    double d = bounds_distance_ ? bounds_distance_(g_.node(id_), centre) : reference::evaluate(g_, id_, centre).distance;
     bool out = std::isfinite(d) && trust_ * d > diag;
     memo_.emplace(key, out);
     return out;
@@ -113,8 +111,8 @@ class Search {
   const ir::Graph& g_;
   ir::NodeId id_;
   Box3 box_;
-  bool jacobian_ = false;
-  double trust_ = kTrust;
+  double (*bounds_distance_)(const ir::Node&, const V&) = nullptr;
+  double trust_ = 0.5;
   long evaluations_ = 0;
   std::unordered_map<uint64_t, bool> memo_;
 };

@@ -8,7 +8,6 @@
 #include "domain_props.hpp"
 #include "fractal_bounds.hpp"
 #include "sdfc/kinds/registry.hpp"
-#include "sdfc/ir/fractal_math.hpp"
 #include "sdfc/passes/passes.hpp"
 
 namespace sdfc::passes {
@@ -52,60 +51,11 @@ ir::Props infer(const ir::Graph& g, const ir::Node& n) {
   if (const kinds::Description* d = kinds::find(n.kind)) return d->props(n);
   if (auto d = detail::domain_props(g, n, kid)) return *d;
   switch (n.kind) {
-    case Kind::Mandelbulb:
-      // The estimator is a bound in practice but not provably; L = 1 assumed.
-      // The numeric methods run the orbit four times.
-      p.bounds = Box3::cube(ir::mandelbulb_set_radius(q[0]));
-      p.cls = DistanceClass::Estimate;
-      p.cost = (10 + q[1] * 45) * (q[3] == 0 ? 1 : 4);
-      break;
     case Kind::StepFactor:
       // A factor <= 1 keeps a bound a bound; above 1 nothing is promised.
       p = kid(0);
       if (q[0] > 1) p.cls = worse(p.cls, DistanceClass::Estimate);
       p.cost += 1;
-      break;
-    // Fractals of issue 3: estimates (a bound in practice, not provably);
-    // bounds from fractal_math.hpp, cost per iteration from the loop body.
-    case Kind::Juliabulb:
-      p.bounds = Box3::cube(ir::julia_set_radius(q[0], std::sqrt(q[3] * q[3] + q[4] * q[4] + q[5] * q[5])));
-      p.cls = DistanceClass::Estimate;
-      p.cost = 10 + q[1] * 45;
-      break;
-    case Kind::Mandelbox: {
-      double smallest = std::fabs(q[0]) * std::min({q[9], q[10], q[11]});
-      double cn = std::sqrt(q[6] * q[6] + q[7] * q[7] + q[8] * q[8]);
-      p.bounds = Box3::cube(ir::mandelbox_half_extent(smallest, q[3], cn, q[5] != 0));
-      p.cls = DistanceClass::Estimate;
-      p.cost = 8 + q[4] * (q[12] == 0 ? 25 : 70);
-      break;
-    }
-    case Kind::QuaternionJulia:
-      p.bounds = Box3::cube(ir::julia_set_radius(q[4], std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3])));
-      p.cls = DistanceClass::Estimate;
-      p.cost = 10 + q[5] * (q[4] == 3 ? 22 : 16);
-      break;
-    case Kind::Menger:
-    case Kind::Sierpinski:
-      p.bounds = Box3::cube(1.0);
-      p.cls = DistanceClass::Estimate;
-      p.cost = 20 + q[0] * (n.kind == Kind::Menger ? 20 : 16);
-      break;
-    case Kind::Kifs: {
-      // Every map of the IFS moves points beyond |offset| further out, so the
-      // attractor lies in the ball of radius |offset|; the estimator's cover
-      // by balls adds |offset| / scale^n.
-      double o = std::sqrt(q[2] * q[2] + q[3] * q[3] + q[4] * q[4]);
-      p.bounds = Box3::cube(o * (1 + std::pow(q[1], -q[5])) * 1.02 + 1e-3);
-      p.cls = DistanceClass::Estimate;
-      p.cost = 10 + q[5] * (q[0] == 2 ? 70 : 40);
-      break;
-    }
-    case Kind::Hybrid:
-      // Points beyond the bailout have escaped before the first step.
-      p.bounds = Box3::cube(q[1]);
-      p.cls = DistanceClass::Estimate;
-      p.cost = 10 + q[0] * 45;
       break;
     case Kind::Translate: {
       p = kid(0);

@@ -6,11 +6,9 @@
 #include <cmath>
 #include <vector>
 
-#include "fractals.hpp"
 #include "sdfc/kinds/registry.hpp"
 #include "domain.hpp"
 #include "materials.hpp"
-#include "sdfc/ir/fractal_math.hpp"
 
 namespace sdfc::reference {
 
@@ -19,29 +17,6 @@ namespace {
 using ir::Kind;
 
 double len(double x, double y, double z) { return std::sqrt(x * x + y * y + z * z); }
-
-double mandelbulb(const Vec3& p, double power, int iterations, double bailout) {
-  bailout = ir::bulb_estimator_radius(power, bailout);
-  double zx = p[0], zy = p[1], zz = p[2];
-  double dr = 1.0, r = len(zx, zy, zz);
-  for (int i = 0; i < iterations && r < bailout; ++i) {
-    double rs = std::max(r, 1e-20);
-    double theta = std::acos(std::clamp(zz / rs, -1.0, 1.0)) * power;
-    double phi = std::atan2(zy, zx) * power;
-    double rp = std::pow(rs, power - 1.0);
-    dr = rp * power * dr + 1.0;
-    double zr = rp * rs;
-    zx = zr * std::sin(theta) * std::cos(phi) + p[0];
-    zy = zr * std::sin(theta) * std::sin(phi) + p[1];
-    zz = zr * std::cos(theta) + p[2];
-    r = len(zx, zy, zz);
-  }
-  double r0 = len(p[0], p[1], p[2]);
-  double set_radius = ir::mandelbulb_set_radius(power);
-  // Far field: distance to the ball that holds the set (the estimator overshoots there).
-  if (r0 > 1.5 * set_radius) return r0 - set_radius;
-  return 0.5 * std::log(std::max(r, 1e-20)) * r / dr;
-}
 
 double smin_poly(double a, double b, double k) {
   double h = std::max(k - std::fabs(a - b), 0.0) / k;
@@ -88,22 +63,11 @@ Sample evaluate_node(const ir::Graph& g, ir::NodeId id, const Vec3& p) {
   if (const kinds::Description* d = kinds::find(n.kind)) return {d->distance(n, p), 0};
   if (auto d = detail::domain_evaluate(g, n, p)) return *d;
   switch (n.kind) {
-    case Kind::Mandelbulb:
-      if (q[3] != 0) return {fractals::mandelbulb_numeric(p, q), 0};
-      return {mandelbulb(p, q[0], int(q[1]), q[2]), 0};
     case Kind::StepFactor: {
       Sample s = evaluate(g, n.children[0], p);
       s.distance *= q[0];
       return s;
     }
-    case Kind::Juliabulb: return {fractals::juliabulb(p, q), 0};
-    case Kind::Mandelbox:
-      return {q[12] != 0 ? fractals::mandelbox_jacobian(p, q) : fractals::mandelbox(p, q), 0};
-    case Kind::QuaternionJulia: return {fractals::quaternion_julia(p, q), 0};
-    case Kind::Menger: return {fractals::menger(p, q), 0};
-    case Kind::Sierpinski: return {fractals::sierpinski(p, q), 0};
-    case Kind::Kifs: return {fractals::kifs(p, q), 0};
-    case Kind::Hybrid: return {fractals::hybrid(p, q), 0};
     case Kind::Translate: return evaluate(g, n.children[0], {p[0] - q[0], p[1] - q[1], p[2] - q[2]});
     case Kind::Rotate: {
       // Stored local->world; apply the transpose to go world->local.

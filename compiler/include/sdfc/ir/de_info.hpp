@@ -1,20 +1,14 @@
 #pragma once
 // What `sdfc check` says about a fractal node's distance estimator: the
-// method and what kind of distance it gives (bound / unknown).
+// method and what kind of distance it gives (bound / unknown), and the step
+// factor it gets by default: both from the kind's description.
 #include <cmath>
 #include <string>
 
-#include "sdfc/ir/fractal_math.hpp"
 #include "sdfc/ir/graph.hpp"
+#include "sdfc/kinds/registry.hpp"
 
 namespace sdfc::ir {
-
-// The `method` parameter's index for the kinds that have one, else -1.
-inline int de_method_param(Kind k) {
-  if (k == Kind::Mandelbulb) return 3;
-  if (k == Kind::Mandelbox) return 12;
-  return -1;
-}
 
 // The step factor a fractal node gets when its YAML gives none: 1 where the
 // estimator never passed a surface in the miss-rate tests, less where it
@@ -34,29 +28,14 @@ inline int de_method_param(Kind k) {
 // The non-conformal Mandelbox with the scalar derivative keeps 1: it is
 // "unknown" and the overshoot is the point (de: jacobian fixes it).
 inline double default_step_factor(const Node& n) {
-  int at = de_method_param(n.kind);
-  auto method = at < 0 ? DeMethod::Analytic : DeMethod(int(n.params[size_t(at)]));
-  switch (n.kind) {
-    case Kind::Mandelbox: {
-      bool non_conformal = n.params[9] != n.params[10] || n.params[10] != n.params[11];
-      return method == DeMethod::Analytic && !non_conformal ? 0.9 : 1.0;
-    }
-    default: return 1.0;
-  }
+  const kinds::Description* d = kinds::find(n.kind);
+  return d && d->step_factor ? d->step_factor(n) : 1.0;
 }
 
 // "analytic, bound in practice" and the like; empty for non-fractals.
 inline std::string de_summary(const Node& n) {
-  if (info(n.kind).category != Category::Fractal) return "";
-  int at = de_method_param(n.kind);
-  auto method = at < 0 ? DeMethod::Analytic : DeMethod(int(n.params[size_t(at)]));
-  std::string what = std::string("de: ") + de_method_name(method);
-  bool non_conformal = n.kind == Kind::Mandelbox && (n.params[9] != n.params[10] || n.params[10] != n.params[11]);
-  if (non_conformal && method == DeMethod::Analytic)
-    return what + ", unknown (non-conformal: the scalar derivative can overshoot; use de: jacobian)";
-  if (n.kind == Kind::Hybrid) return what + ", bound in practice (linear estimator r / dr at escape radius 100, not proven)";
-  if (method == DeMethod::Jacobian) return what + ", near-exact (can overshoot slightly: no conservative term)";
-  return what + ", bound in practice (not proven)";
+  const kinds::Description* d = kinds::find(n.kind);
+  return d && d->de_summary ? d->de_summary(n) : "";
 }
 
 }  // namespace sdfc::ir

@@ -20,12 +20,6 @@ inline bool supports_dual_normals(Kind k) {
     case Kind::SmoothDifference:
     case Kind::Material:
     case Kind::StepFactor:
-    // Fractals with a running Jacobian: the normal is the direction of
-    // grad |z_n| (forward-mode dual numbers through the orbit).
-    case Kind::Mandelbulb:
-    case Kind::Juliabulb:
-    case Kind::Mandelbox:
-    case Kind::QuaternionJulia:
     case Kind::Bounded: return true;
     default: return false;
   }

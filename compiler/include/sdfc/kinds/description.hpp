@@ -7,16 +7,22 @@
 // row of the one kind table (compiler/kinds.cmake collects them):
 //   SDFC_KIND(Enum, id, "printed name", Category, arity, "param names", "stdlib function")
 #include <array>
+#include <cstddef>
 #include <cstring>
+#include <span>
+#include <string>
 #include <string_view>
 #include <type_traits>
 #include <vector>
 
 #include "sdfc/ir/graph.hpp"
+#include "sdfc/kinds/param_doc.hpp"
+#include "sdfc/reference/evaluator.hpp"
 
 namespace sdfc::kinds {
 
 class Lowering;  // sdfc/kinds/lowering.hpp
+struct Emitter;  // compiler/src/kinds/fractal.hpp: a fractal's node, point and code writer
 using V3 = std::array<double, 3>;
 
 // Proves the generated table saw this file's SDFC_KIND line.
@@ -40,6 +46,9 @@ std::vector<double> params_of(const P& p) {
 }
 template <class P>
 constexpr size_t count_of() { return sizeof(P) / sizeof(double); }
+// The index in Node::params of a field of P (for animated parameters, whose
+// expression is kept by index): SDFC_AT(MandelbulbP, power).
+#define SDFC_AT(P, field) (offsetof(P, field) / sizeof(double))
 
 struct Description {
   ir::Kind kind;
@@ -60,6 +69,42 @@ struct Description {
   // The stdlib function giving distance and gradient (same arguments, then
   // the gradient's address); empty when there is none.
   std::string_view gradient_function = {};
+
+  // ---- Fractals (Category::Fractal): estimators with an orbit. They write
+  // their own code instead of the stdlib call of call_args; the registry's
+  // start-up check requires emit, emit_orbit, orbit_colour and de_summary of
+  // every fractal, and emit_dual of one that claims dual normals.
+  // Writes any statements to the emitter and returns the distance expression.
+  std::string (*emit)(Emitter&) = nullptr;
+  // The orbit's value the emitter asks for (trap, smooth count or escape
+  // step; see codegen's OrbitValue) at its point.
+  std::string (*emit_orbit)(Emitter&) = nullptr;
+  // render.normals: dual: the expression of the direction of grad |z_n|.
+  std::string (*emit_dual)(Emitter&) = nullptr;
+  // The double-precision orbit trap and smooth iteration count.
+  reference::OrbitColour (*orbit_colour)(const ir::Node&, const V3& p, const ir::TrapShape& shape) = nullptr;
+  // What `sdfc check` says of the estimator ("de: analytic, bound in practice ...").
+  std::string (*de_summary)(const ir::Node&) = nullptr;
+  // The step factor the node gets when its YAML gives none; null: 1.
+  double (*step_factor)(const ir::Node&) = nullptr;
+  // passes/fractal_bounds tightens the worst-case box by searching with the
+  // estimator, believing this share of it (0: no search), with
+  // bounds_distance instead of distance where that one overshoots.
+  double bounds_trust = 0;
+  double (*bounds_distance)(const ir::Node&, const V3& p) = nullptr;
+  // An escape-time orbit: its estimate is good only outside the set, so
+  // `sdfc mesh` takes the surface half a voxel out (a render stops at its
+  // hit epsilon likewise).
+  bool escape_time = false;
+  // Its bounds are the cube around a ball (the set's radius): alone in a
+  // scene, its rays are clipped to that ball too (passes/analyse).
+  bool ball_bounds = false;
+  // ---- end of the fractal members ----
+
+  // What the node is, in one line for the docs ("exact", "a bound", ...).
+  std::string_view summary = {};
+  // Its parameters for the docs, in the order a scene usually writes them.
+  std::span<const ParamDoc> docs = {};
 };
 
 }  // namespace sdfc::kinds

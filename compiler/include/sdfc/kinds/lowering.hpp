@@ -31,6 +31,12 @@ class Lowering {
   }
   // Parameters that may be expressions of time, in the order of Node::params.
   ir::NodeId make_animated(const std::vector<frontend::Param>& params);
+  // For lowerings that read more than one map (a fractal's nested steps) or
+  // make a node of a sibling kind (mandelbulb with julia: a Juliabulb).
+  frontend::ValueReader& reader() { return r_; }
+  ir::Builder& builder() { return b_; }
+  const SourceValue& body() const { return body_; }
+  const SourceLoc& at() const { return key_.loc; }
 
  private:
   ir::NodeId make_node(std::vector<double> params);

@@ -17,5 +17,8 @@ struct CallArg {
   int width;
 };
 const std::vector<CallArg>& call_args(ir::Kind k);
+// Throws std::logic_error naming the kind when d misses a part its kind
+// needs (the registry runs it on every description at first use).
+void check(const Description& d);
 
 }  // namespace sdfc::kinds
