@@ -42,11 +42,24 @@ double distance(const ir::Node& n, const V3& pa) {
   return std::min({bar(p.x, q.y, q.z), bar(q.x, p.y, q.z), bar(q.x, q.y, p.z)});
 }
 
+constexpr ParamDoc k_docs[] = {
+    {"size", "vec3", "[1, 1, 1]", "each > 0", "the full edge lengths along x, y and z"},
+    {"edge", "number", "0.05", "> 0, less than half the smallest side", "the side of the bars"},
+};
+
 }  // namespace
 
 namespace described {
-extern const Description BoxFrame{ir::Kind::BoxFrame, "box_frame", "{box_frame: {size: [1.0, 0.8, 0.6], edge: 0.08}}",
-                                  count_of<BoxFrameP>(), lower, props, "h, edge", distance};
+extern const Description BoxFrame{.kind = ir::Kind::BoxFrame,
+                                  .yaml = "box_frame",
+                                  .example = "{box_frame: {size: [1.0, 0.8, 0.6], edge: 0.08}}",
+                                  .param_count = count_of<BoxFrameP>(),
+                                  .lower = lower,
+                                  .props = props,
+                                  .call_args = "h, edge",
+                                  .distance = distance,
+                                  .summary = "The twelve edges of a box as square bars.",
+                                  .docs = k_docs};
 }
 
 }  // namespace sdfc::kinds

@@ -110,19 +110,54 @@ double round_cone_distance(const ir::Node& n, const V3& pa) {
   return x * a + y * b - r1;
 }
 
+constexpr ParamDoc k_cone_docs[] = {
+    {"radius", "number", "0.5", "> 0", "the radius of the base disc"},
+    {"height", "number", "1", "> 0", "base at z = -height/2, apex at +height/2"},
+};
+constexpr ParamDoc k_capped_cone_docs[] = {
+    {"height", "number", "1", "> 0", "from z = -height/2 to +height/2"},
+    {"bottom_radius", "number", "0.5", ">= 0, not both radii 0", "the radius at the bottom"},
+    {"top_radius", "number", "0.25", ">= 0, not both radii 0", "the radius at the top"},
+};
+constexpr ParamDoc k_round_cone_docs[] = {
+    {"height", "number", "1", "> 0, more than |bottom_radius - top_radius|", "the distance between the centres"},
+    {"bottom_radius", "number", "0.5", ">= 0, not both radii 0", "the lower sphere"},
+    {"top_radius", "number", "0.25", ">= 0, not both radii 0", "the upper sphere"},
+};
+
 }  // namespace
 
 namespace described {
-extern const Description Cone{ir::Kind::Cone, "cone", "{cone: {radius: 0.6, height: 1.2}}", count_of<ConeP>(),
-                              lower_cone, cone_props, "radius, half_height", cone_distance};
-extern const Description CappedCone{ir::Kind::CappedCone, "capped_cone",
-                                    "{capped_cone: {height: 1.0, bottom_radius: 0.6, top_radius: 0.25}}",
-                                    count_of<CappedConeP>(), lower_capped_cone, capped_cone_props,
-                                    "half_height, bottom_radius, top_radius", capped_cone_distance};
-extern const Description RoundCone{ir::Kind::RoundCone, "round_cone",
-                                   "{round_cone: {height: 0.8, bottom_radius: 0.4, top_radius: 0.15}}",
-                                   count_of<RoundConeP>(), lower_round_cone, round_cone_props,
-                                   "bottom_radius, top_radius, half_height", round_cone_distance};
+extern const Description Cone{.kind = ir::Kind::Cone,
+                              .yaml = "cone",
+                              .example = "{cone: {radius: 0.6, height: 1.2}}",
+                              .param_count = count_of<ConeP>(),
+                              .lower = lower_cone,
+                              .props = cone_props,
+                              .call_args = "radius, half_height",
+                              .distance = cone_distance,
+                              .summary = "A cone along z, its base disc down.",
+                              .docs = k_cone_docs};
+extern const Description CappedCone{.kind = ir::Kind::CappedCone,
+                                    .yaml = "capped_cone",
+                                    .example = "{capped_cone: {height: 1.0, bottom_radius: 0.6, top_radius: 0.25}}",
+                                    .param_count = count_of<CappedConeP>(),
+                                    .lower = lower_capped_cone,
+                                    .props = capped_cone_props,
+                                    .call_args = "half_height, bottom_radius, top_radius",
+                                    .distance = capped_cone_distance,
+                                    .summary = "A frustum along z; one of its radii may be 0.",
+                                    .docs = k_capped_cone_docs};
+extern const Description RoundCone{.kind = ir::Kind::RoundCone,
+                                   .yaml = "round_cone",
+                                   .example = "{round_cone: {height: 0.8, bottom_radius: 0.4, top_radius: 0.15}}",
+                                   .param_count = count_of<RoundConeP>(),
+                                   .lower = lower_round_cone,
+                                   .props = round_cone_props,
+                                   .call_args = "bottom_radius, top_radius, half_height",
+                                   .distance = round_cone_distance,
+                                   .summary = "The hull of two spheres on the z axis, at z = -height/2 and +height/2.",
+                                   .docs = k_round_cone_docs};
 }  // namespace described
 
 }  // namespace sdfc::kinds

@@ -106,17 +106,46 @@ double quad_distance(const ir::Node& n, const V3& p) {
   return polygon(at(p), c, 4) - q.half_thickness;
 }
 
+constexpr ParamDoc k_triangle_docs[] = {
+    {"a", "vec3", "[-0.5, -0.5, 0]", "", "a corner"},
+    {"b", "vec3", "[0.5, -0.5, 0]", "", "a corner"},
+    {"c", "vec3", "[0, 0.5, 0]", "not on the line through a and b", "a corner"},
+    {"thickness", "number", "0.05", "> 0", "the full thickness of the slab"},
+};
+constexpr ParamDoc k_quad_docs[] = {
+    {"a", "vec3", "[-0.5, -0.5, 0]", "", "the corners, in order round the outline"},
+    {"b", "vec3", "[0.5, -0.5, 0]", "", "the next corner"},
+    {"c", "vec3", "[0.5, 0.5, 0]", "in the plane of a, b and d", "the next corner"},
+    {"d", "vec3", "[-0.5, 0.5, 0]", "a, b, c, d convex", "the last corner"},
+    {"thickness", "number", "0.05", "> 0", "the full thickness of the slab"},
+};
+
 }  // namespace
 
 namespace described {
 extern const Description Triangle{
-    ir::Kind::Triangle, "triangle",
-    "{triangle: {a: [-0.5, -0.4, -0.1], b: [0.6, -0.3, 0.2], c: [0.0, 0.5, 0.0], thickness: 0.08}}",
-    count_of<TriangleP>(), lower_triangle, triangle_props, "a, b, c, half_thickness", triangle_distance};
-extern const Description Quad{
-    ir::Kind::Quad, "quad",
-    "{quad: {a: [-0.5, -0.5, 0], b: [0.6, -0.4, 0], c: [0.5, 0.5, 0], d: [-0.4, 0.4, 0], thickness: 0.08}, rotate: [20, 30, 0]}",
-    count_of<QuadP>(), lower_quad, quad_props, "a, b, c, d, half_thickness", quad_distance};
+    .kind = ir::Kind::Triangle,
+    .yaml = "triangle",
+    .example = "{triangle: {a: [-0.5, -0.4, -0.1], b: [0.6, -0.3, 0.2], c: [0.0, 0.5, 0.0], thickness: 0.08}}",
+    .param_count = count_of<TriangleP>(),
+    .lower = lower_triangle,
+    .props = triangle_props,
+    .call_args = "a, b, c, half_thickness",
+    .distance = triangle_distance,
+    .summary = "A thin slab around a triangle.",
+    .docs = k_triangle_docs};
+extern const Description Quad{.kind = ir::Kind::Quad,
+                              .yaml = "quad",
+                              .example =
+                                  "{quad: {a: [-0.5, -0.5, 0], b: [0.6, -0.4, 0], c: [0.5, 0.5, 0], d: [-0.4, 0.4, 0], "
+                                  "thickness: 0.08}, rotate: [20, 30, 0]}",
+                              .param_count = count_of<QuadP>(),
+                              .lower = lower_quad,
+                              .props = quad_props,
+                              .call_args = "a, b, c, d, half_thickness",
+                              .distance = quad_distance,
+                              .summary = "A thin slab around a flat, convex quadrilateral.",
+                              .docs = k_quad_docs};
 }  // namespace described
 
 }  // namespace sdfc::kinds

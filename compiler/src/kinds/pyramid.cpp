@@ -51,11 +51,24 @@ double distance(const ir::Node& n, const V3& pa) {
   return std::max(side, -y) * base;
 }
 
+constexpr ParamDoc k_docs[] = {
+    {"base", "number", "1", "> 0", "the side of the square base at z = -height/2"},
+    {"height", "number", "1", "> 0", "the apex is at z = +height/2"},
+};
+
 }  // namespace
 
 namespace described {
-extern const Description Pyramid{ir::Kind::Pyramid, "pyramid", "{pyramid: {base: 1.0, height: 0.8}}",
-                                 count_of<PyramidP>(), lower, props, "base, height", distance};
+extern const Description Pyramid{.kind = ir::Kind::Pyramid,
+                                 .yaml = "pyramid",
+                                 .example = "{pyramid: {base: 1.0, height: 0.8}}",
+                                 .param_count = count_of<PyramidP>(),
+                                 .lower = lower,
+                                 .props = props,
+                                 .call_args = "base, height",
+                                 .distance = distance,
+                                 .summary = "A square pyramid along z, its base down.",
+                                 .docs = k_docs};
 }
 
 }  // namespace sdfc::kinds

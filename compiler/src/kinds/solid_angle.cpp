@@ -40,11 +40,24 @@ double distance(const ir::Node& n, const V3& p) {
   return std::max(l, m * sgn(s.cos_angle * qx - s.sin_angle * qy));
 }
 
+constexpr ParamDoc k_docs[] = {
+    {"angle", "number", "30", "> 0, at most 180", "the cone's half-angle in degrees (180: the whole ball)"},
+    {"radius", "number", "1", "> 0", "the radius of the ball"},
+};
+
 }  // namespace
 
 namespace described {
-extern const Description SolidAngle{ir::Kind::SolidAngle, "solid_angle", "{solid_angle: {angle: 40, radius: 0.8}}",
-                                    count_of<SolidAngleP>(), lower, props, "sin_angle, cos_angle, radius", distance};
+extern const Description SolidAngle{.kind = ir::Kind::SolidAngle,
+                                    .yaml = "solid_angle",
+                                    .example = "{solid_angle: {angle: 40, radius: 0.8}}",
+                                    .param_count = count_of<SolidAngleP>(),
+                                    .lower = lower,
+                                    .props = props,
+                                    .call_args = "sin_angle, cos_angle, radius",
+                                    .distance = distance,
+                                    .summary = "The part of a ball inside a cone about +z with its apex at the centre.",
+                                    .docs = k_docs};
 }
 
 }  // namespace sdfc::kinds
