@@ -47,7 +47,7 @@ double distance(const ir::Node& n, const V3& pa) {
   double d2 = std::min(qy, -qx * m2 - qy * 0.5) > 0 ? 0 : std::min(a, b);
   double side = std::sqrt((d2 + qz * qz) / m2) * sgn(std::max(qz, -y));
   // Quilez's formula measures to the sloping faces; the base face is ours.
-  if (y < 0) return std::sqrt(base_gap2(p, base) + y * y) * base;
+  if (y <= 0) return std::sqrt(base_gap2(p, base) + y * y) * base;
   return std::max(side, -y) * base;
 }
 
