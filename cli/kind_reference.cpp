@@ -92,7 +92,9 @@ std::string kind_reference_markdown() {
       "## Node reference\n"
       "Every node kind with its parameters, their defaults and the values they\n"
       "accept, its distance class and an example with its picture (the example\n"
-      "alone, framed by `camera.fit`). A parameter left out takes its default.\n\n";
+      "alone, framed by `camera.fit`). A parameter left out takes its default.\n"
+      "A primitive's numbers and vec3s may be expressions of `time` (see\n"
+      "[Animation](#animation)) unless their row says they are fixed.\n\n";
   const auto& all = kinds::all();
   for (int c = 0; c <= int(ir::Category::Material); ++c) {
     bool heading = false;

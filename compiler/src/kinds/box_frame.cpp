@@ -17,12 +17,14 @@ struct BoxFrameP {
 
 ir::NodeId lower(Lowering& l) {
   frontend::MapReader m = l.map({"size", "edge"});
-  frontend::Vec3d size = m.vec3("size", {1, 1, 1}, Range::positive());
-  double edge = m.number("edge", 0.05, Range::positive());
-  double smallest = std::min({size[0], size[1], size[2]});
-  if (edge >= smallest / 2)
-    l.fail(m, "edge", fmt::format("box_frame.edge: {} must be less than half the smallest side ({})", edge, smallest / 2));
-  return l.make(BoxFrameP{{size[0] / 2, size[1] / 2, size[2] / 2}, edge});
+  frontend::Param3 size = m.param3("size", {1, 1, 1}, Range::positive());
+  frontend::Param edge = m.param("edge", 0.05, Range::positive());
+  // At every time: the largest edge against the smallest side.
+  double smallest = std::min({size[0].lo, size[1].lo, size[2].lo});
+  if (edge.hi >= smallest / 2)
+    l.fail(m, "edge",
+           fmt::format("box_frame.edge: {} must be less than half the smallest side ({})", edge.hi, smallest / 2));
+  return l.make_animated({size[0].scaled(0.5), size[1].scaled(0.5), size[2].scaled(0.5), edge});
 }
 
 ir::Props props(const ir::Node& n) {

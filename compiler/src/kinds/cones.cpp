@@ -24,36 +24,39 @@ struct RoundConeP {
 
 ir::NodeId lower_cone(Lowering& l) {
   frontend::MapReader m = l.map({"radius", "height"});
-  double radius = m.number("radius", 0.5, Range::positive()), height = m.number("height", 1, Range::positive());
-  return l.make(ConeP{radius, height / 2});
+  frontend::Param radius = m.param("radius", 0.5, Range::positive()), height = m.param("height", 1, Range::positive());
+  return l.make_animated({radius, height.scaled(0.5)});
 }
 
 // capped_cone and round_cone read the same keys.
 struct Radii {
-  double height, r1, r2;
+  frontend::Param height, r1, r2;
 };
 Radii read_radii(Lowering& l, frontend::MapReader& m) {
-  double height = m.number("height", 1, Range::positive());
-  double r1 = m.number("bottom_radius", 0.5, Range::non_negative());
-  double r2 = m.number("top_radius", 0.25, Range::non_negative());
-  if (r1 == 0 && r2 == 0) l.fail(m, "top_radius", "bottom_radius and top_radius cannot both be 0");
+  frontend::Param height = m.param("height", 1, Range::positive());
+  frontend::Param r1 = m.param("bottom_radius", 0.5, Range::non_negative());
+  frontend::Param r2 = m.param("top_radius", 0.25, Range::non_negative());
+  // Both may be 0 at once unless one stays above 0 at every time.
+  if (r1.lo == 0 && r2.lo == 0) l.fail(m, "top_radius", "bottom_radius and top_radius cannot both be 0");
   return {height, r1, r2};
 }
 
 ir::NodeId lower_capped_cone(Lowering& l) {
   frontend::MapReader m = l.map({"height", "bottom_radius", "top_radius"});
   Radii r = read_radii(l, m);
-  return l.make(CappedConeP{r.height / 2, r.r1, r.r2});
+  return l.make_animated({r.height.scaled(0.5), r.r1, r.r2});
 }
 
 ir::NodeId lower_round_cone(Lowering& l) {
   frontend::MapReader m = l.map({"height", "bottom_radius", "top_radius"});
   Radii r = read_radii(l, m);
   // The round cone is the hull of two spheres: one must not swallow the other.
-  if (std::fabs(r.r1 - r.r2) >= r.height)
-    l.fail(m, "height", fmt::format("round_cone.height: {} must exceed |bottom_radius - top_radius| = {}", r.height,
-                                    std::fabs(r.r1 - r.r2)));
-  return l.make(RoundConeP{r.r1, r.r2, r.height / 2});
+  // At every time: the largest difference of the radii against the smallest height.
+  double apart = std::max(r.r1.hi - r.r2.lo, r.r2.hi - r.r1.lo);
+  if (apart >= r.height.lo)
+    l.fail(m, "height",
+           fmt::format("round_cone.height: {} must exceed |bottom_radius - top_radius| = {}", r.height.lo, apart));
+  return l.make_animated({r.r1, r.r2, r.height.scaled(0.5)});
 }
 
 ir::Props cone_props(const ir::Node& n) {

@@ -13,8 +13,8 @@ struct EllipsoidP {
 
 ir::NodeId lower(Lowering& l) {
   frontend::MapReader m = l.map({"radii"});
-  frontend::Vec3d r = m.vec3("radii", {1, 0.5, 0.25}, frontend::Range::positive());
-  return l.make(EllipsoidP{r});
+  frontend::Param3 r = m.param3("radii", {1, 0.5, 0.25}, frontend::Range::positive());
+  return l.make_animated({r[0], r[1], r[2]});
 }
 
 ir::Props props(const ir::Node& n) {

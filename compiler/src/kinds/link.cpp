@@ -16,12 +16,14 @@ struct LinkP {
 
 ir::NodeId lower(Lowering& l) {
   frontend::MapReader m = l.map({"length", "major_radius", "minor_radius"});
-  double length = m.number("length", 0.5, Range::non_negative());
-  double major = m.number("major_radius", 0.4, Range::positive());
-  double minor = m.number("minor_radius", 0.1, Range::positive());
-  if (minor >= major)
-    l.fail(m, "minor_radius", fmt::format("link.minor_radius: {} must be less than major_radius ({})", minor, major));
-  return l.make(LinkP{length / 2, major, minor});
+  frontend::Param length = m.param("length", 0.5, Range::non_negative());
+  frontend::Param major = m.param("major_radius", 0.4, Range::positive());
+  frontend::Param minor = m.param("minor_radius", 0.1, Range::positive());
+  // At every time: the largest minor radius against the smallest major one.
+  if (minor.hi >= major.lo)
+    l.fail(m, "minor_radius",
+           fmt::format("link.minor_radius: {} must be less than major_radius ({})", minor.hi, major.lo));
+  return l.make_animated({length.scaled(0.5), major, minor});
 }
 
 ir::Props props(const ir::Node& n) {

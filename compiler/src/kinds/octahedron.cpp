@@ -13,7 +13,7 @@ struct OctahedronP {
 
 ir::NodeId lower(Lowering& l) {
   frontend::MapReader m = l.map({"size"});
-  return l.make(OctahedronP{m.number("size", 1, frontend::Range::positive())});
+  return l.make_animated({m.param("size", 1, frontend::Range::positive())});
 }
 
 ir::Props props(const ir::Node& n) { return leaf(ir::Box3::cube(view<OctahedronP>(n).size), 28); }

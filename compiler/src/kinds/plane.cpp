@@ -26,7 +26,7 @@ double distance(const ir::Node& n, const V3& p) {
 }
 
 constexpr ParamDoc k_docs[] = {
-    {"normal", "vec3", "[0, 0, 1]", "not zero", "points out of the solid; it is normalised"},
+    {"normal", "vec3", "[0, 0, 1]", "not zero", "points out of the solid; it is normalised; fixed, not an expression of time"},
     {"offset", "number", "0", "", "moves the plane along its normal"},
 };
 

@@ -18,13 +18,13 @@ struct TriPrismP {
 
 ir::NodeId lower_hex(Lowering& l) {
   frontend::MapReader m = l.map({"apothem", "height"});
-  double a = m.number("apothem", 0.5, Range::positive()), height = m.number("height", 1, Range::positive());
-  return l.make(HexPrismP{a, height / 2});
+  frontend::Param a = m.param("apothem", 0.5, Range::positive()), height = m.param("height", 1, Range::positive());
+  return l.make_animated({a, height.scaled(0.5)});
 }
 ir::NodeId lower_tri(Lowering& l) {
   frontend::MapReader m = l.map({"side", "height"});
-  double side = m.number("side", 1, Range::positive()), height = m.number("height", 1, Range::positive());
-  return l.make(TriPrismP{side / 2, height / 2});
+  frontend::Param side = m.param("side", 1, Range::positive()), height = m.param("height", 1, Range::positive());
+  return l.make_animated({side.scaled(0.5), height.scaled(0.5)});
 }
 
 ir::Props hex_props(const ir::Node& n) {

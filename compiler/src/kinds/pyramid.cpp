@@ -14,8 +14,8 @@ struct PyramidP {
 
 ir::NodeId lower(Lowering& l) {
   frontend::MapReader m = l.map({"base", "height"});
-  double base = m.number("base", 1, Range::positive()), height = m.number("height", 1, Range::positive());
-  return l.make(PyramidP{base, height});
+  frontend::Param base = m.param("base", 1, Range::positive()), height = m.param("height", 1, Range::positive());
+  return l.make_animated({base, height});
 }
 
 ir::Props props(const ir::Node& n) {

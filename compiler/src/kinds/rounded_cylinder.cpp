@@ -16,12 +16,14 @@ struct RoundedCylinderP {
 
 ir::NodeId lower(Lowering& l) {
   frontend::MapReader m = l.map({"radius", "height", "edge_radius"});
-  double radius = m.number("radius", 0.5, Range::positive()), height = m.number("height", 1, Range::positive());
-  double edge = m.number("edge_radius", 0.1, Range::non_negative());
-  if (edge > std::min(radius, height / 2))
-    l.fail(m, "edge_radius", fmt::format("rounded_cylinder.edge_radius: {} is more than min(radius, height/2) = {}",
-                                         edge, std::min(radius, height / 2)));
-  return l.make(RoundedCylinderP{radius, height / 2, edge});
+  frontend::Param radius = m.param("radius", 0.5, Range::positive()), height = m.param("height", 1, Range::positive());
+  frontend::Param edge = m.param("edge_radius", 0.1, Range::non_negative());
+  // At every time: the largest edge against the smallest radius and height.
+  double room = std::min(radius.lo, height.lo / 2);
+  if (edge.hi > room)
+    l.fail(m, "edge_radius",
+           fmt::format("rounded_cylinder.edge_radius: {} is more than min(radius, height/2) = {}", edge.hi, room));
+  return l.make_animated({radius, height.scaled(0.5), edge});
 }
 
 ir::Props props(const ir::Node& n) {

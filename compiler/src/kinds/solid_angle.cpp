@@ -18,9 +18,11 @@ struct SolidAngleP {
 ir::NodeId lower(Lowering& l) {
   frontend::MapReader m = l.map({"angle", "radius"});
   // The cone's half-angle in degrees: 180 is the whole ball.
-  double angle = m.number("angle", 30, Range::positive(180)), radius = m.number("radius", 1, Range::positive());
+  // The angle stays fixed (the node holds its sine and cosine); the radius may move.
+  double angle = m.number("angle", 30, Range::positive(180));
+  frontend::Param radius = m.param("radius", 1, Range::positive());
   double a = angle * std::numbers::pi / 180;
-  return l.make(SolidAngleP{std::sin(a), std::cos(a), radius});
+  return l.make_animated({std::sin(a), std::cos(a), radius});
 }
 
 ir::Props props(const ir::Node& n) {
@@ -41,7 +43,7 @@ double distance(const ir::Node& n, const V3& p) {
 }
 
 constexpr ParamDoc k_docs[] = {
-    {"angle", "number", "30", "> 0, at most 180", "the cone's half-angle in degrees (180: the whole ball)"},
+    {"angle", "number", "30", "> 0, at most 180", "the cone's half-angle in degrees (180: the whole ball); fixed, not an expression of time"},
     {"radius", "number", "1", "> 0", "the radius of the ball"},
 };
 
