@@ -22,19 +22,24 @@ std::string materials_of(const std::vector<KindCell>& cells) {
   return out;
 }
 
-// Every example fits in a cube of side 3 about the origin (checked).
+// The grid's examples fit in a cube of side 3 about the origin.
 constexpr double kSpacing = 4;
 
 }  // namespace
+
+bool fits_a_cell(const kinds::Description& d, const ir::Box3& b) {
+  if (ir::info(d.kind).category != ir::Category::Primitive || !b.finite()) return false;
+  for (int i = 0; i < 3; ++i)
+    if (b.lo[i] < -1.5 || b.hi[i] > 1.5) return false;
+  return true;
+}
 
 KindScene grid_scene(const std::string& name, const std::vector<const kinds::Description*>& kinds) {
   KindScene grid{name, "", {}};
   for (const kinds::Description* d : kinds) {
     ir::Module m = compile_example(*d);
     const ir::Box3& b = m.graph->node(m.root).props.bounds;
-    for (int i = 0; i < 3; ++i)
-      if (!(b.lo[i] >= -1.5 && b.hi[i] <= 1.5))
-        throw std::logic_error(fmt::format("{}: its example reaches past 1.5 from the origin", d->yaml));
+    if (!fits_a_cell(*d, b)) throw std::logic_error(fmt::format("{}: its example does not fit a grid cell", d->yaml));
     size_t n = grid.cells.size();
     V3 centre = {kSpacing * double(n % 5), kSpacing * double(n / 5), 0};
     KindCell cell{d, centre, add(b.lo, centre), add(b.hi, centre)};
@@ -54,11 +59,14 @@ std::vector<KindScene> build() {
   std::vector<const kinds::Description*> bounded;
   for (const kinds::Description* d : kinds::all()) {
     ir::Module m = compile_example(*d);
-    if (m.graph->node(m.root).props.bounds.finite()) {
+    const ir::Box3& b = m.graph->node(m.root).props.bounds;
+    if (fits_a_cell(*d, b)) {
       bounded.push_back(d);
       continue;
     }
+    // Alone: in its bounds when they are finite, else about the origin.
     KindCell cell{d, {0, 0, 0}, {-2, -2, -2}, {2, 2, 2}};
+    if (b.finite()) cell.lo = b.lo, cell.hi = b.hi;
     std::string yaml = materials_of({cell}) + fmt::format("scene: {{material: {}, {}\n", cell.material(),
                                                           std::string(d->example).substr(1));
     scenes.push_back({"alone_" + std::string(d->yaml), yaml, {cell}});

@@ -2,7 +2,8 @@
 // Scenes built from the kind table (compiler/src/kinds/): every described
 // kind's example with a material of its own. The bounded examples share one
 // scene, each in its own cell of a grid (one kernel per evaluator however
-// many kinds there are); an unbounded example (a plane) gets a scene alone.
+// many kinds there are); an unbounded or large example (a plane, a fractal)
+// and every kind that is not a primitive gets a scene alone.
 #include <string>
 #include <vector>
 
@@ -24,7 +25,11 @@ struct KindScene {
   std::vector<KindCell> cells;
 };
 
-// These bounded kinds' examples in one scene, on a grid.
+// A primitive whose example is bounded and small shares the grid; the
+// others (a plane, a large fractal) get a scene each.
+bool fits_a_cell(const kinds::Description& d, const ir::Box3& example_bounds);
+
+// These small bounded primitives' examples in one scene, on a grid.
 KindScene grid_scene(const std::string& name, const std::vector<const kinds::Description*>& kinds);
 
 // Every described kind is in exactly one of these.

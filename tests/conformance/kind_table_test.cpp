@@ -43,9 +43,11 @@ TEST(KindTableScenes, EveryDescribedKindHasAScene) {
     ir::Module m = test::compile_text(s.yaml, s.name + ".yaml");
     std::set<ir::Kind> kinds;
     for (ir::NodeId id : m.graph->postorder(m.root)) kinds.insert(m.graph->node(id).kind);
-    for (const KindCell& c : s.cells)
-      if (ir::info(c.kind->kind).category == ir::Category::Primitive)
+    for (const KindCell& c : s.cells) {
+      if (ir::info(c.kind->kind).category == ir::Category::Primitive) {
         EXPECT_TRUE(kinds.count(c.kind->kind)) << s.name << " lost its " << c.kind->yaml;
+      }
+    }
   }
 }
 
@@ -72,7 +74,11 @@ TEST_P(KindTableConformance, MatchesReference) {
   std::vector<size_t> owner;  // the cell each point was drawn for
   for (size_t c = 0; c < s.cells.size(); ++c)
     for (const V3& p : cell_points(m, s.cells[c], rng)) pts.push_back(p), owner.push_back(c);
-  ProbeCheck pc = probe_and_compare(m, cfg, pts, kernel_tolerance(cfg.dbl));
+  // A fractal's estimator is ill-conditioned inside: the suite's fractal tolerance.
+  Tolerance tol = kernel_tolerance(cfg.dbl);
+  if (m.graph->node(m.root).props.cls == ir::DistanceClass::Estimate)
+    tol = cfg.dbl ? Tolerance{1e-9, 0x1p-23} : Tolerance{2e-4, 2e-3, 5e-3, 0.5};
+  ProbeCheck pc = probe_and_compare(m, cfg, pts, tol);
   // On and just inside its own example's surface a point gets the
   // example's material (the others are more than a cell away; far off the
   // surface a bounds box may answer first, with no material).
@@ -94,8 +100,9 @@ INSTANTIATE_TEST_SUITE_P(Kinds, KindTableConformance,
 
 // ---- dual normals ------------------------------------------------------------
 
-// Every kind that claims dual normals, in one scene: at its surface the
-// dual normal agrees with central differences of the same kernel.
+// Every primitive that claims dual normals, in one scene: at its surface
+// the dual normal agrees with central differences of the same kernel
+// (the fractals' dual normals have DualNormalsFractals).
 class KindTableDualNormals : public ::testing::TestWithParam<bool> {};
 
 TEST_P(KindTableDualNormals, AgreeWithCentralDifferences) {
@@ -104,7 +111,7 @@ TEST_P(KindTableDualNormals, AgreeWithCentralDifferences) {
   for (const kinds::Description* d : kinds::all()) {
     if (!d->dual_normals) continue;
     ir::Module one = compile_example(*d);
-    if (one.graph->node(one.root).props.bounds.finite()) dual.push_back(d);
+    if (fits_a_cell(*d, one.graph->node(one.root).props.bounds)) dual.push_back(d);
   }
   if (dual.empty()) GTEST_SKIP() << "no described kind claims dual normals";
   KindScene s = grid_scene("dual_kinds", dual);
@@ -177,6 +184,8 @@ class KindTableOracle : public ::testing::TestWithParam<const kinds::Description
 
 TEST_P(KindTableOracle, ReferenceAgreesWithBruteForce) {
   const kinds::Description& d = *GetParam();
+  if (ir::info(d.kind).category != ir::Category::Primitive)
+    GTEST_SKIP() << d.yaml << " is not a primitive: its distance depends on its children (see its own suite)";
   // The kind's own distance on its node, in the node's frame (the module
   // around it may add transforms and a bounds box that answers far off).
   ir::Module m = compile_example(d);
