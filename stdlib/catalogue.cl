@@ -187,7 +187,8 @@ inline real sd_pyramid(vec3 p, real base, real height)
     d = fmax(SEL(d, -d, fmax(qz, -y) < 0.0f), -y);
     real sx = fmax(ax - 0.5f, K(0.0f)), sz = fmax(az - 0.5f, K(0.0f));
     real below = sqrt(sx * sx + sz * sz + y * y);
-    return SEL(d, below, y < 0.0f) * base;
+    // On the base plane too (y == 0): the slope formula's sign is 0 there.
+    return SEL(d, below, y <= 0.0f) * base;
 }
 
 //! fn sd_triangle

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <sstream>
 #include <string>
 
@@ -38,6 +39,31 @@ inline void expect_golden(const std::string& text, const std::string& name) {
   std::string golden = std::filesystem::exists(path) ? read_text_file(path) : "";
   ASSERT_FALSE(golden.empty()) << "missing " << path << " (run with SDFC_UPDATE_GOLDEN=1)";
   EXPECT_TRUE(text == golden) << name << " differs at " << first_difference(golden, text);
+}
+
+// The kernel's sections (each starts with a "// ---- title" line; the
+// lines before the first belong to none) whose title starts with one of
+// `titles`, or (keep = false) all the others.
+inline std::string kernel_sections(const std::string& kernel, std::initializer_list<const char*> titles, bool keep) {
+  std::istringstream in(kernel);
+  std::string line, out;
+  bool named = false;
+  while (std::getline(in, line)) {
+    if (line.rfind("// ---- ", 0) == 0) {
+      named = false;
+      for (const char* t : titles) named = named || line.rfind(t, 0) == 0;
+    }
+    if (named == keep) out += line + "\n";
+  }
+  return out;
+}
+
+// The titles of the sections that hold the scene's own functions.
+inline std::initializer_list<const char*> scene_section_titles() {
+  static const std::initializer_list<const char*> titles = {
+      "// ---- scene", "// ---- orbit trap of the nearest fractal", "// ---- iteration count of the nearest fractal",
+      "// ---- the scene's exact gradient"};
+  return titles;
 }
 
 }  // namespace sdfc::test

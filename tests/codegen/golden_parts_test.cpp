@@ -7,8 +7,6 @@
 
 #include <fmt/format.h>
 
-#include <sstream>
-
 #include "golden_file.hpp"
 #include "sdfc/compile.hpp"
 #include "sdfc/ir/printer.hpp"
@@ -32,30 +30,13 @@ void expect_ir_golden(const std::string& example, const std::string& name) {
   test::expect_golden(out, "ir/" + name + ".ir");
 }
 
-// The kernel's sections (each starts with a "// ---- title" line) whose
-// title names a scene function.
-std::string scene_part(const std::string& kernel) {
-  static const char* kScene[] = {"// ---- scene", "// ---- orbit trap of the nearest fractal",
-                                 "// ---- iteration count of the nearest fractal", "// ---- the scene's exact gradient"};
-  std::istringstream in(kernel);
-  std::string line, out;
-  bool keep = false;
-  while (std::getline(in, line)) {
-    if (line.rfind("// ---- ", 0) == 0) {
-      keep = false;
-      for (const char* s : kScene) keep = keep || line.rfind(s, 0) == 0;
-    }
-    if (keep) out += line + "\n";
-  }
-  return out;
-}
-
 void expect_scene_golden(const std::string& example, const std::vector<std::string>& sets, bool aovs,
                          const std::string& name) {
   codegen::EmitOptions opt;
   opt.simd_width = 8;
   opt.aovs = aovs;
-  std::string part = scene_part(codegen::emit_opencl(compile_example(example, sets), opt).source);
+  std::string part = test::kernel_sections(codegen::emit_opencl(compile_example(example, sets), opt).source,
+                                          test::scene_section_titles(), true);
   ASSERT_NE(part.find("scene_dist("), std::string::npos) << "no scene function found";
   test::expect_golden(part, "scene/" + name + ".w8.cl");
 }

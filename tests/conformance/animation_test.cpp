@@ -26,6 +26,15 @@ const char* kHead = "materials: {m1: {color: [0.9, 0.2, 0.1]}, m2: {color: [0.1,
 
 std::vector<AnimScene> anim_scenes() {
   return {
+      {"catalogue",
+       "scene:\n  union:\n"
+       "    - {cone: {radius: \"0.3 + 0.1*sin(time)\", height: 0.6}, translate: [-0.8, -0.8, 0], material: m1}\n"
+       "    - {round_cone: {height: \"0.6 + 0.1*cos(time)\", bottom_radius: 0.25, top_radius: 0.1}, translate: [0.8, -0.8, 0]}\n"
+       "    - {link: {length: \"0.3 + 0.2*sin(time)\", major_radius: 0.3, minor_radius: 0.08}, translate: [0, 0.8, 0], material: m2}\n"
+       "    - {box_frame: {size: [\"0.6 + 0.2*sin(time)\", 0.6, 0.6], edge: 0.06}, translate: [-0.8, 0.8, 0]}\n"
+       "    - {pyramid: {base: 0.6, height: \"0.6 + 0.2*sin(2*time)\"}, translate: [0.8, 0.8, 0]}\n"
+       "    - {ellipsoid: {radii: [0.3, \"0.2 + 0.1*cos(time)\", 0.2]}, translate: [0, 0, 0.7]}\n"
+       "    - {triangle: {thickness: \"0.05 + 0.04*sin(time)\"}, translate: [0, -0.8, 0.6]}\n"},
       {"primitives",
        "scene:\n  union:\n"
        "    - {sphere: {radius: \"0.35 + 0.1*sin(time)\"}, translate: [\"0.6*cos(time)\", 0, \"0.2*sin(2*time)\"], material: m1}\n"

@@ -39,13 +39,26 @@ double distance(const ir::Node& n, const V3& p) {
   return outside + inside - r;
 }
 
+constexpr ParamDoc k_docs[] = {
+    {"size", "vec3", "[1, 1, 1]", "each > 0", "the full edge lengths along x, y and z"},
+    {"radius", "number", "0", ">= 0, at most half the smallest side", "rounds the edges inside the box (0: sharp)"},
+};
+
 }  // namespace
 
 namespace described {
-extern const Description Box{.kind = ir::Kind::Box, .yaml = "box", .example = "{box: {size: [1, 0.8, 0.6], radius: 0.1}}",
-                             .param_count = count_of<BoxP>(), .lower = lower, .props = props,
-                             .call_args = "h, radius", .distance = distance, .dual_normals = true,
-                             .gradient_function = "sdg_box"};
+extern const Description Box{.kind = ir::Kind::Box,
+                             .yaml = "box",
+                             .example = "{box: {size: [1, 0.8, 0.6], radius: 0.1}}",
+                             .param_count = count_of<BoxP>(),
+                             .lower = lower,
+                             .props = props,
+                             .call_args = "h, radius",
+                             .distance = distance,
+                             .dual_normals = true,
+                             .gradient_function = "sdg_box",
+                             .summary = "A box centred on the origin, its edges optionally rounded.",
+                             .docs = k_docs};
 }
 
 }  // namespace sdfc::kinds

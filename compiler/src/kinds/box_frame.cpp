@@ -17,12 +17,14 @@ struct BoxFrameP {
 
 ir::NodeId lower(Lowering& l) {
   frontend::MapReader m = l.map({"size", "edge"});
-  frontend::Vec3d size = m.vec3("size", {1, 1, 1}, Range::positive());
-  double edge = m.number("edge", 0.05, Range::positive());
-  double smallest = std::min({size[0], size[1], size[2]});
-  if (edge >= smallest / 2)
-    l.fail(m, "edge", fmt::format("box_frame.edge: {} must be less than half the smallest side ({})", edge, smallest / 2));
-  return l.make(BoxFrameP{{size[0] / 2, size[1] / 2, size[2] / 2}, edge});
+  frontend::Param3 size = m.param3("size", {1, 1, 1}, Range::positive());
+  frontend::Param edge = m.param("edge", 0.05, Range::positive());
+  // At every time: the largest edge against the smallest side.
+  double smallest = std::min({size[0].lo, size[1].lo, size[2].lo});
+  if (edge.hi >= smallest / 2)
+    l.fail(m, "edge",
+           fmt::format("box_frame.edge: {} must be less than half the smallest side ({})", edge.hi, smallest / 2));
+  return l.make_animated({size[0].scaled(0.5), size[1].scaled(0.5), size[2].scaled(0.5), edge});
 }
 
 ir::Props props(const ir::Node& n) {
@@ -42,11 +44,24 @@ double distance(const ir::Node& n, const V3& pa) {
   return std::min({bar(p.x, q.y, q.z), bar(q.x, p.y, q.z), bar(q.x, q.y, p.z)});
 }
 
+constexpr ParamDoc k_docs[] = {
+    {"size", "vec3", "[1, 1, 1]", "each > 0", "the full edge lengths along x, y and z"},
+    {"edge", "number", "0.05", "> 0, less than half the smallest side", "the side of the bars"},
+};
+
 }  // namespace
 
 namespace described {
-extern const Description BoxFrame{ir::Kind::BoxFrame, "box_frame", "{box_frame: {size: [1.0, 0.8, 0.6], edge: 0.08}}",
-                                  count_of<BoxFrameP>(), lower, props, "h, edge", distance};
+extern const Description BoxFrame{.kind = ir::Kind::BoxFrame,
+                                  .yaml = "box_frame",
+                                  .example = "{box_frame: {size: [1.0, 0.8, 0.6], edge: 0.08}}",
+                                  .param_count = count_of<BoxFrameP>(),
+                                  .lower = lower,
+                                  .props = props,
+                                  .call_args = "h, edge",
+                                  .distance = distance,
+                                  .summary = "The twelve edges of a box as square bars.",
+                                  .docs = k_docs};
 }
 
 }  // namespace sdfc::kinds

@@ -37,14 +37,28 @@ double distance(const ir::Node& n, const V3& p) {
   return len({pa[0] - ba[0] * h, pa[1] - ba[1] * h, pa[2] - ba[2] * h}) - c.radius;
 }
 
+constexpr ParamDoc k_docs[] = {
+    {"a", "vec3", "[0, 0, -0.5]", "", "one end of the segment"},
+    {"b", "vec3", "[0, 0, 0.5]", "", "the other end"},
+    {"radius", "number", "0.25", "> 0", "the distance from the segment"},
+};
+
 }  // namespace
 
 namespace described {
-extern const Description Capsule{.kind = ir::Kind::Capsule, .yaml = "capsule",
-                                 .example = "{capsule: {a: [-0.4, 0.1, -0.3], b: [0.3, -0.2, 0.4], radius: 0.15}}",
-                                 .param_count = count_of<CapsuleP>(), .lower = lower, .props = props,
-                                 .call_args = "a, b, radius", .distance = distance, .dual_normals = true,
-                                 .gradient_function = "sdg_capsule"};
+extern const Description Capsule{
+    .kind = ir::Kind::Capsule,
+    .yaml = "capsule",
+    .example = "{capsule: {a: [-0.4, 0.1, -0.3], b: [0.3, -0.2, 0.4], radius: 0.15}}",
+    .param_count = count_of<CapsuleP>(),
+    .lower = lower,
+    .props = props,
+    .call_args = "a, b, radius",
+    .distance = distance,
+    .dual_normals = true,
+    .gradient_function = "sdg_capsule",
+    .summary = "All points within radius of the segment from a to b (`segment` is another name for it).",
+    .docs = k_docs};
 }
 
 }  // namespace sdfc::kinds

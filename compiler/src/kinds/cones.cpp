@@ -24,36 +24,39 @@ struct RoundConeP {
 
 ir::NodeId lower_cone(Lowering& l) {
   frontend::MapReader m = l.map({"radius", "height"});
-  double radius = m.number("radius", 0.5, Range::positive()), height = m.number("height", 1, Range::positive());
-  return l.make(ConeP{radius, height / 2});
+  frontend::Param radius = m.param("radius", 0.5, Range::positive()), height = m.param("height", 1, Range::positive());
+  return l.make_animated({radius, height.scaled(0.5)});
 }
 
 // capped_cone and round_cone read the same keys.
 struct Radii {
-  double height, r1, r2;
+  frontend::Param height, r1, r2;
 };
 Radii read_radii(Lowering& l, frontend::MapReader& m) {
-  double height = m.number("height", 1, Range::positive());
-  double r1 = m.number("bottom_radius", 0.5, Range::non_negative());
-  double r2 = m.number("top_radius", 0.25, Range::non_negative());
-  if (r1 == 0 && r2 == 0) l.fail(m, "top_radius", "bottom_radius and top_radius cannot both be 0");
+  frontend::Param height = m.param("height", 1, Range::positive());
+  frontend::Param r1 = m.param("bottom_radius", 0.5, Range::non_negative());
+  frontend::Param r2 = m.param("top_radius", 0.25, Range::non_negative());
+  // Both may be 0 at once unless one stays above 0 at every time.
+  if (r1.lo == 0 && r2.lo == 0) l.fail(m, "top_radius", "bottom_radius and top_radius cannot both be 0");
   return {height, r1, r2};
 }
 
 ir::NodeId lower_capped_cone(Lowering& l) {
   frontend::MapReader m = l.map({"height", "bottom_radius", "top_radius"});
   Radii r = read_radii(l, m);
-  return l.make(CappedConeP{r.height / 2, r.r1, r.r2});
+  return l.make_animated({r.height.scaled(0.5), r.r1, r.r2});
 }
 
 ir::NodeId lower_round_cone(Lowering& l) {
   frontend::MapReader m = l.map({"height", "bottom_radius", "top_radius"});
   Radii r = read_radii(l, m);
   // The round cone is the hull of two spheres: one must not swallow the other.
-  if (std::fabs(r.r1 - r.r2) >= r.height)
-    l.fail(m, "height", fmt::format("round_cone.height: {} must exceed |bottom_radius - top_radius| = {}", r.height,
-                                    std::fabs(r.r1 - r.r2)));
-  return l.make(RoundConeP{r.r1, r.r2, r.height / 2});
+  // At every time: the largest difference of the radii against the smallest height.
+  double apart = std::max(r.r1.hi - r.r2.lo, r.r2.hi - r.r1.lo);
+  if (apart >= r.height.lo)
+    l.fail(m, "height",
+           fmt::format("round_cone.height: {} must exceed |bottom_radius - top_radius| = {}", r.height.lo, apart));
+  return l.make_animated({r.r1, r.r2, r.height.scaled(0.5)});
 }
 
 ir::Props cone_props(const ir::Node& n) {
@@ -110,19 +113,54 @@ double round_cone_distance(const ir::Node& n, const V3& pa) {
   return x * a + y * b - r1;
 }
 
+constexpr ParamDoc k_cone_docs[] = {
+    {"radius", "number", "0.5", "> 0", "the radius of the base disc"},
+    {"height", "number", "1", "> 0", "base at z = -height/2, apex at +height/2"},
+};
+constexpr ParamDoc k_capped_cone_docs[] = {
+    {"height", "number", "1", "> 0", "from z = -height/2 to +height/2"},
+    {"bottom_radius", "number", "0.5", ">= 0, not both radii 0", "the radius at the bottom"},
+    {"top_radius", "number", "0.25", ">= 0, not both radii 0", "the radius at the top"},
+};
+constexpr ParamDoc k_round_cone_docs[] = {
+    {"height", "number", "1", "> 0, more than |bottom_radius - top_radius|", "the distance between the centres"},
+    {"bottom_radius", "number", "0.5", ">= 0, not both radii 0", "the lower sphere"},
+    {"top_radius", "number", "0.25", ">= 0, not both radii 0", "the upper sphere"},
+};
+
 }  // namespace
 
 namespace described {
-extern const Description Cone{ir::Kind::Cone, "cone", "{cone: {radius: 0.6, height: 1.2}}", count_of<ConeP>(),
-                              lower_cone, cone_props, "radius, half_height", cone_distance};
-extern const Description CappedCone{ir::Kind::CappedCone, "capped_cone",
-                                    "{capped_cone: {height: 1.0, bottom_radius: 0.6, top_radius: 0.25}}",
-                                    count_of<CappedConeP>(), lower_capped_cone, capped_cone_props,
-                                    "half_height, bottom_radius, top_radius", capped_cone_distance};
-extern const Description RoundCone{ir::Kind::RoundCone, "round_cone",
-                                   "{round_cone: {height: 0.8, bottom_radius: 0.4, top_radius: 0.15}}",
-                                   count_of<RoundConeP>(), lower_round_cone, round_cone_props,
-                                   "bottom_radius, top_radius, half_height", round_cone_distance};
+extern const Description Cone{.kind = ir::Kind::Cone,
+                              .yaml = "cone",
+                              .example = "{cone: {radius: 0.6, height: 1.2}}",
+                              .param_count = count_of<ConeP>(),
+                              .lower = lower_cone,
+                              .props = cone_props,
+                              .call_args = "radius, half_height",
+                              .distance = cone_distance,
+                              .summary = "A cone along z, its base disc down.",
+                              .docs = k_cone_docs};
+extern const Description CappedCone{.kind = ir::Kind::CappedCone,
+                                    .yaml = "capped_cone",
+                                    .example = "{capped_cone: {height: 1.0, bottom_radius: 0.6, top_radius: 0.25}}",
+                                    .param_count = count_of<CappedConeP>(),
+                                    .lower = lower_capped_cone,
+                                    .props = capped_cone_props,
+                                    .call_args = "half_height, bottom_radius, top_radius",
+                                    .distance = capped_cone_distance,
+                                    .summary = "A frustum along z; one of its radii may be 0.",
+                                    .docs = k_capped_cone_docs};
+extern const Description RoundCone{.kind = ir::Kind::RoundCone,
+                                   .yaml = "round_cone",
+                                   .example = "{round_cone: {height: 0.8, bottom_radius: 0.4, top_radius: 0.15}}",
+                                   .param_count = count_of<RoundConeP>(),
+                                   .lower = lower_round_cone,
+                                   .props = round_cone_props,
+                                   .call_args = "bottom_radius, top_radius, half_height",
+                                   .distance = round_cone_distance,
+                                   .summary = "The hull of two spheres on the z axis, at z = -height/2 and +height/2.",
+                                   .docs = k_round_cone_docs};
 }  // namespace described
 
 }  // namespace sdfc::kinds

@@ -30,14 +30,26 @@ double distance(const ir::Node& n, const V3& p) {
   return std::min(std::max(dr, dz), 0.0) + std::hypot(std::max(dr, 0.0), std::max(dz, 0.0));
 }
 
+constexpr ParamDoc k_docs[] = {
+    {"radius", "number", "0.5", "> 0", "its radius"},
+    {"height", "number", "1", "> 0", "the full height, from z = -height/2 to +height/2"},
+};
+
 }  // namespace
 
 namespace described {
-extern const Description Cylinder{.kind = ir::Kind::Cylinder, .yaml = "cylinder",
+extern const Description Cylinder{.kind = ir::Kind::Cylinder,
+                                  .yaml = "cylinder",
                                   .example = "{cylinder: {radius: 0.5, height: 1.2}}",
-                                  .param_count = count_of<CylinderP>(), .lower = lower, .props = props,
-                                  .call_args = "radius, half_height", .distance = distance, .dual_normals = true,
-                                  .gradient_function = "sdg_cylinder"};
+                                  .param_count = count_of<CylinderP>(),
+                                  .lower = lower,
+                                  .props = props,
+                                  .call_args = "radius, half_height",
+                                  .distance = distance,
+                                  .dual_normals = true,
+                                  .gradient_function = "sdg_cylinder",
+                                  .summary = "A capped cylinder along z.",
+                                  .docs = k_docs};
 }
 
 }  // namespace sdfc::kinds

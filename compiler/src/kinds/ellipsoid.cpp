@@ -13,8 +13,8 @@ struct EllipsoidP {
 
 ir::NodeId lower(Lowering& l) {
   frontend::MapReader m = l.map({"radii"});
-  frontend::Vec3d r = m.vec3("radii", {1, 0.5, 0.25}, frontend::Range::positive());
-  return l.make(EllipsoidP{r});
+  frontend::Param3 r = m.param3("radii", {1, 0.5, 0.25}, frontend::Range::positive());
+  return l.make_animated({r[0], r[1], r[2]});
 }
 
 ir::Props props(const ir::Node& n) {
@@ -31,11 +31,24 @@ double distance(const ir::Node& n, const V3& pa) {
   return std::max(k1 > 0 ? k0 * (k0 - 1) / k1 : 0.0, (k0 - 1) * rmin);
 }
 
+constexpr ParamDoc k_docs[] = {
+    {"radii", "vec3", "[1, 0.5, 0.25]", "each > 0", "the semi-axes along x, y and z"},
+};
+
 }  // namespace
 
 namespace described {
-extern const Description Ellipsoid{ir::Kind::Ellipsoid, "ellipsoid", "{ellipsoid: {radii: [0.8, 0.5, 0.3]}}",
-                                   count_of<EllipsoidP>(), lower, props, "r", distance};
+extern const Description Ellipsoid{
+    .kind = ir::Kind::Ellipsoid,
+    .yaml = "ellipsoid",
+    .example = "{ellipsoid: {radii: [0.8, 0.5, 0.3]}}",
+    .param_count = count_of<EllipsoidP>(),
+    .lower = lower,
+    .props = props,
+    .call_args = "r",
+    .distance = distance,
+    .summary = "An ellipsoid centred on the origin; its distance is a bound, as no closed form exists.",
+    .docs = k_docs};
 }
 
 }  // namespace sdfc::kinds

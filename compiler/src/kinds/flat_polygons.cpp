@@ -28,13 +28,22 @@ Vec3d cross3(const Vec3d& a, const Vec3d& b) {
 double dot3(const Vec3d& a, const Vec3d& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 double norm(const Vec3d& a) { return std::sqrt(dot3(a, a)); }
 
+// The corners as they are (they stay fixed: their checks need them), then
+// the thickness, which may be an expression of time.
+ir::NodeId make_slab(Lowering& l, std::initializer_list<Vec3d> corners, const frontend::Param& thickness) {
+  std::vector<frontend::Param> params;
+  for (const Vec3d& c : corners) params.insert(params.end(), {c[0], c[1], c[2]});
+  params.push_back(thickness.scaled(0.5));
+  return l.make_animated(params);
+}
+
 ir::NodeId lower_triangle(Lowering& l) {
   frontend::MapReader m = l.map({"a", "b", "c", "thickness"});
   Vec3d a = m.vec3("a", {-0.5, -0.5, 0}), bb = m.vec3("b", {0.5, -0.5, 0}), c = m.vec3("c", {0, 0.5, 0});
-  double t = m.number("thickness", 0.05, Range::positive());
+  frontend::Param t = m.param("thickness", 0.05, Range::positive());
   if (norm(cross3(sub(bb, a), sub(c, a))) < 1e-9)
     l.fail(m, "c", "triangle: the corners a, b, c lie on one line; they must span a triangle");
-  return l.make(TriangleP{a, bb, c, t / 2});
+  return make_slab(l, {a, bb, c}, t);
 }
 
 // The quad's formula needs a flat, convex outline a -> b -> c -> d.
@@ -58,9 +67,9 @@ ir::NodeId lower_quad(Lowering& l) {
   frontend::MapReader m = l.map({"a", "b", "c", "d", "thickness"});
   Vec3d a = m.vec3("a", {-0.5, -0.5, 0}), bb = m.vec3("b", {0.5, -0.5, 0}), c = m.vec3("c", {0.5, 0.5, 0}),
         d = m.vec3("d", {-0.5, 0.5, 0});
-  double t = m.number("thickness", 0.05, Range::positive());
+  frontend::Param t = m.param("thickness", 0.05, Range::positive());
   check_quad(l, m, {a, bb, c, d});
-  return l.make(QuadP{a, bb, c, d, t / 2});
+  return make_slab(l, {a, bb, c, d}, t);
 }
 
 // The box around a set of corners, grown by the slab's half thickness.
@@ -106,17 +115,46 @@ double quad_distance(const ir::Node& n, const V3& p) {
   return polygon(at(p), c, 4) - q.half_thickness;
 }
 
+constexpr ParamDoc k_triangle_docs[] = {
+    {"a", "vec3", "[-0.5, -0.5, 0]", "", "a corner; the corners are fixed, not expressions of time"},
+    {"b", "vec3", "[0.5, -0.5, 0]", "", "a corner"},
+    {"c", "vec3", "[0, 0.5, 0]", "not on the line through a and b", "a corner"},
+    {"thickness", "number", "0.05", "> 0", "the full thickness of the slab"},
+};
+constexpr ParamDoc k_quad_docs[] = {
+    {"a", "vec3", "[-0.5, -0.5, 0]", "", "the corners, in order round the outline; fixed, not expressions of time"},
+    {"b", "vec3", "[0.5, -0.5, 0]", "", "the next corner"},
+    {"c", "vec3", "[0.5, 0.5, 0]", "in the plane of a, b and d", "the next corner"},
+    {"d", "vec3", "[-0.5, 0.5, 0]", "a, b, c, d convex", "the last corner"},
+    {"thickness", "number", "0.05", "> 0", "the full thickness of the slab"},
+};
+
 }  // namespace
 
 namespace described {
 extern const Description Triangle{
-    ir::Kind::Triangle, "triangle",
-    "{triangle: {a: [-0.5, -0.4, -0.1], b: [0.6, -0.3, 0.2], c: [0.0, 0.5, 0.0], thickness: 0.08}}",
-    count_of<TriangleP>(), lower_triangle, triangle_props, "a, b, c, half_thickness", triangle_distance};
-extern const Description Quad{
-    ir::Kind::Quad, "quad",
-    "{quad: {a: [-0.5, -0.5, 0], b: [0.6, -0.4, 0], c: [0.5, 0.5, 0], d: [-0.4, 0.4, 0], thickness: 0.08}, rotate: [20, 30, 0]}",
-    count_of<QuadP>(), lower_quad, quad_props, "a, b, c, d, half_thickness", quad_distance};
+    .kind = ir::Kind::Triangle,
+    .yaml = "triangle",
+    .example = "{triangle: {a: [-0.5, -0.4, -0.1], b: [0.6, -0.3, 0.2], c: [0.0, 0.5, 0.0], thickness: 0.08}}",
+    .param_count = count_of<TriangleP>(),
+    .lower = lower_triangle,
+    .props = triangle_props,
+    .call_args = "a, b, c, half_thickness",
+    .distance = triangle_distance,
+    .summary = "A thin slab around a triangle.",
+    .docs = k_triangle_docs};
+extern const Description Quad{.kind = ir::Kind::Quad,
+                              .yaml = "quad",
+                              .example =
+                                  "{quad: {a: [-0.5, -0.5, 0], b: [0.6, -0.4, 0], c: [0.5, 0.5, 0], d: [-0.4, 0.4, 0], "
+                                  "thickness: 0.08}, rotate: [20, 30, 0]}",
+                              .param_count = count_of<QuadP>(),
+                              .lower = lower_quad,
+                              .props = quad_props,
+                              .call_args = "a, b, c, d, half_thickness",
+                              .distance = quad_distance,
+                              .summary = "A thin slab around a flat, convex quadrilateral.",
+                              .docs = k_quad_docs};
 }  // namespace described
 
 }  // namespace sdfc::kinds

@@ -16,12 +16,14 @@ struct LinkP {
 
 ir::NodeId lower(Lowering& l) {
   frontend::MapReader m = l.map({"length", "major_radius", "minor_radius"});
-  double length = m.number("length", 0.5, Range::non_negative());
-  double major = m.number("major_radius", 0.4, Range::positive());
-  double minor = m.number("minor_radius", 0.1, Range::positive());
-  if (minor >= major)
-    l.fail(m, "minor_radius", fmt::format("link.minor_radius: {} must be less than major_radius ({})", minor, major));
-  return l.make(LinkP{length / 2, major, minor});
+  frontend::Param length = m.param("length", 0.5, Range::non_negative());
+  frontend::Param major = m.param("major_radius", 0.4, Range::positive());
+  frontend::Param minor = m.param("minor_radius", 0.1, Range::positive());
+  // At every time: the largest minor radius against the smallest major one.
+  if (minor.hi >= major.lo)
+    l.fail(m, "minor_radius",
+           fmt::format("link.minor_radius: {} must be less than major_radius ({})", minor.hi, major.lo));
+  return l.make_animated({length.scaled(0.5), major, minor});
 }
 
 ir::Props props(const ir::Node& n) {
@@ -36,11 +38,25 @@ double distance(const ir::Node& n, const V3& p) {
   return len2(len2(p[0], y) - k.major, p[2]) - k.minor;
 }
 
+constexpr ParamDoc k_docs[] = {
+    {"length", "number", "0.5", ">= 0", "the length of the straight parts"},
+    {"major_radius", "number", "0.4", "> 0", "the radius of the bends, to the middle of the wire"},
+    {"minor_radius", "number", "0.1", "> 0, less than major_radius", "the radius of the wire"},
+};
+
 }  // namespace
 
 namespace described {
-extern const Description Link{ir::Kind::Link, "link", "{link: {length: 0.6, major_radius: 0.35, minor_radius: 0.1}}",
-                              count_of<LinkP>(), lower, props, "half_length, major, minor", distance};
+extern const Description Link{.kind = ir::Kind::Link,
+                              .yaml = "link",
+                              .example = "{link: {length: 0.6, major_radius: 0.35, minor_radius: 0.1}}",
+                              .param_count = count_of<LinkP>(),
+                              .lower = lower,
+                              .props = props,
+                              .call_args = "half_length, major, minor",
+                              .distance = distance,
+                              .summary = "A chain link in the xy-plane, its straight parts along y.",
+                              .docs = k_docs};
 }
 
 }  // namespace sdfc::kinds

@@ -13,7 +13,7 @@ struct OctahedronP {
 
 ir::NodeId lower(Lowering& l) {
   frontend::MapReader m = l.map({"size"});
-  return l.make(OctahedronP{m.number("size", 1, frontend::Range::positive())});
+  return l.make_animated({m.param("size", 1, frontend::Range::positive())});
 }
 
 ir::Props props(const ir::Node& n) { return leaf(ir::Box3::cube(view<OctahedronP>(n).size), 28); }
@@ -31,11 +31,23 @@ double distance(const ir::Node& n, const V3& pa) {
   return len({q.x, q.y - s + k, q.z - k});
 }
 
+constexpr ParamDoc k_docs[] = {
+    {"size", "number", "1", "> 0", "its vertices lie at this distance on the axes"},
+};
+
 }  // namespace
 
 namespace described {
-extern const Description Octahedron{ir::Kind::Octahedron, "octahedron", "{octahedron: {size: 0.7}}",
-                                    count_of<OctahedronP>(), lower, props, "size", distance};
+extern const Description Octahedron{.kind = ir::Kind::Octahedron,
+                                    .yaml = "octahedron",
+                                    .example = "{octahedron: {size: 0.7}}",
+                                    .param_count = count_of<OctahedronP>(),
+                                    .lower = lower,
+                                    .props = props,
+                                    .call_args = "size",
+                                    .distance = distance,
+                                    .summary = "A regular octahedron centred on the origin.",
+                                    .docs = k_docs};
 }
 
 }  // namespace sdfc::kinds

@@ -25,13 +25,26 @@ double distance(const ir::Node& n, const V3& p) {
   return p[0] * s.n[0] + p[1] * s.n[1] + p[2] * s.n[2] - s.offset;
 }
 
+constexpr ParamDoc k_docs[] = {
+    {"normal", "vec3", "[0, 0, 1]", "not zero", "points out of the solid; it is normalised; fixed, not an expression of time"},
+    {"offset", "number", "0", "", "moves the plane along its normal"},
+};
+
 }  // namespace
 
 namespace described {
-extern const Description Plane{.kind = ir::Kind::Plane, .yaml = "plane", .example = "{plane: {offset: -0.5}}",
-                               .param_count = count_of<PlaneP>(), .lower = lower, .props = props,
-                               .call_args = "n, offset", .distance = distance, .dual_normals = true,
-                               .gradient_function = "sdg_plane"};
+extern const Description Plane{.kind = ir::Kind::Plane,
+                               .yaml = "plane",
+                               .example = "{plane: {offset: -0.5}}",
+                               .param_count = count_of<PlaneP>(),
+                               .lower = lower,
+                               .props = props,
+                               .call_args = "n, offset",
+                               .distance = distance,
+                               .dual_normals = true,
+                               .gradient_function = "sdg_plane",
+                               .summary = "The solid half-space below the plane dot(p, normal) = offset.",
+                               .docs = k_docs};
 }
 
 }  // namespace sdfc::kinds

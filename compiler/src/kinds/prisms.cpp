@@ -18,13 +18,13 @@ struct TriPrismP {
 
 ir::NodeId lower_hex(Lowering& l) {
   frontend::MapReader m = l.map({"apothem", "height"});
-  double a = m.number("apothem", 0.5, Range::positive()), height = m.number("height", 1, Range::positive());
-  return l.make(HexPrismP{a, height / 2});
+  frontend::Param a = m.param("apothem", 0.5, Range::positive()), height = m.param("height", 1, Range::positive());
+  return l.make_animated({a, height.scaled(0.5)});
 }
 ir::NodeId lower_tri(Lowering& l) {
   frontend::MapReader m = l.map({"side", "height"});
-  double side = m.number("side", 1, Range::positive()), height = m.number("height", 1, Range::positive());
-  return l.make(TriPrismP{side / 2, height / 2});
+  frontend::Param side = m.param("side", 1, Range::positive()), height = m.param("height", 1, Range::positive());
+  return l.make_animated({side.scaled(0.5), height.scaled(0.5)});
 }
 
 ir::Props hex_props(const ir::Node& n) {
@@ -74,13 +74,38 @@ double tri_distance(const ir::Node& n, const V3& p) {
   return extrude(triangle2(p[0], p[1], t.half_side), p[2], t.half_height);
 }
 
+constexpr ParamDoc k_hex_docs[] = {
+    {"apothem", "number", "0.5", "> 0", "flat sides at y = +-apothem"},
+    {"height", "number", "1", "> 0", "the full height along z"},
+};
+constexpr ParamDoc k_tri_docs[] = {
+    {"side", "number", "1", "> 0", "the side of the triangle"},
+    {"height", "number", "1", "> 0", "the full height along z"},
+};
+
 }  // namespace
 
 namespace described {
-extern const Description HexPrism{ir::Kind::HexPrism, "hex_prism", "{hex_prism: {apothem: 0.5, height: 0.8}}",
-                                  count_of<HexPrismP>(), lower_hex, hex_props, "apothem, half_height", hex_distance};
-extern const Description TriPrism{ir::Kind::TriPrism, "tri_prism", "{tri_prism: {side: 1.0, height: 0.6}}",
-                                  count_of<TriPrismP>(), lower_tri, tri_props, "half_side, half_height", tri_distance};
+extern const Description HexPrism{.kind = ir::Kind::HexPrism,
+                                  .yaml = "hex_prism",
+                                  .example = "{hex_prism: {apothem: 0.5, height: 0.8}}",
+                                  .param_count = count_of<HexPrismP>(),
+                                  .lower = lower_hex,
+                                  .props = hex_props,
+                                  .call_args = "apothem, half_height",
+                                  .distance = hex_distance,
+                                  .summary = "A hexagonal prism along z.",
+                                  .docs = k_hex_docs};
+extern const Description TriPrism{.kind = ir::Kind::TriPrism,
+                                  .yaml = "tri_prism",
+                                  .example = "{tri_prism: {side: 1.0, height: 0.6}}",
+                                  .param_count = count_of<TriPrismP>(),
+                                  .lower = lower_tri,
+                                  .props = tri_props,
+                                  .call_args = "half_side, half_height",
+                                  .distance = tri_distance,
+                                  .summary = "An equilateral triangle (apex towards +y) extruded along z.",
+                                  .docs = k_tri_docs};
 }  // namespace described
 
 }  // namespace sdfc::kinds

@@ -14,8 +14,8 @@ struct PyramidP {
 
 ir::NodeId lower(Lowering& l) {
   frontend::MapReader m = l.map({"base", "height"});
-  double base = m.number("base", 1, Range::positive()), height = m.number("height", 1, Range::positive());
-  return l.make(PyramidP{base, height});
+  frontend::Param base = m.param("base", 1, Range::positive()), height = m.param("height", 1, Range::positive());
+  return l.make_animated({base, height});
 }
 
 ir::Props props(const ir::Node& n) {
@@ -47,15 +47,28 @@ double distance(const ir::Node& n, const V3& pa) {
   double d2 = std::min(qy, -qx * m2 - qy * 0.5) > 0 ? 0 : std::min(a, b);
   double side = std::sqrt((d2 + qz * qz) / m2) * sgn(std::max(qz, -y));
   // Quilez's formula measures to the sloping faces; the base face is ours.
-  if (y < 0) return std::sqrt(base_gap2(p, base) + y * y) * base;
+  if (y <= 0) return std::sqrt(base_gap2(p, base) + y * y) * base;
   return std::max(side, -y) * base;
 }
+
+constexpr ParamDoc k_docs[] = {
+    {"base", "number", "1", "> 0", "the side of the square base at z = -height/2"},
+    {"height", "number", "1", "> 0", "the apex is at z = +height/2"},
+};
 
 }  // namespace
 
 namespace described {
-extern const Description Pyramid{ir::Kind::Pyramid, "pyramid", "{pyramid: {base: 1.0, height: 0.8}}",
-                                 count_of<PyramidP>(), lower, props, "base, height", distance};
+extern const Description Pyramid{.kind = ir::Kind::Pyramid,
+                                 .yaml = "pyramid",
+                                 .example = "{pyramid: {base: 1.0, height: 0.8}}",
+                                 .param_count = count_of<PyramidP>(),
+                                 .lower = lower,
+                                 .props = props,
+                                 .call_args = "base, height",
+                                 .distance = distance,
+                                 .summary = "A square pyramid along z, its base down.",
+                                 .docs = k_docs};
 }
 
 }  // namespace sdfc::kinds

@@ -73,6 +73,12 @@ void check(const Description& d) {
     if (k.stdlib_function.empty() || d.call_args.empty()) missing("stdlib call");
     if (d.dual_normals && d.gradient_function.empty()) missing("gradient function (it claims dual normals)");
   }
+  // The node reference of docs/scene-format.md is generated from these.
+  if (d.summary.empty()) missing("summary (docs)");
+  if (d.docs.empty() && !k.params.empty()) missing("parameter docs");
+  for (const ParamDoc& p : d.docs)
+    if (p.name.empty() || p.type.empty() || p.what.empty())
+      throw std::logic_error(fmt::format("kind '{}': parameter doc '{}' lacks its name, type or meaning", k.name, p.name));
   if (d.param_count != k.params.size())
     throw std::logic_error(fmt::format("kind '{}': its parameter struct holds {} numbers, its table row names {}",
                                        k.name, d.param_count, k.params.size()));

@@ -18,9 +18,11 @@ struct SolidAngleP {
 ir::NodeId lower(Lowering& l) {
   frontend::MapReader m = l.map({"angle", "radius"});
   // The cone's half-angle in degrees: 180 is the whole ball.
-  double angle = m.number("angle", 30, Range::positive(180)), radius = m.number("radius", 1, Range::positive());
+  // The angle stays fixed (the node holds its sine and cosine); the radius may move.
+  double angle = m.number("angle", 30, Range::positive(180));
+  frontend::Param radius = m.param("radius", 1, Range::positive());
   double a = angle * std::numbers::pi / 180;
-  return l.make(SolidAngleP{std::sin(a), std::cos(a), radius});
+  return l.make_animated({std::sin(a), std::cos(a), radius});
 }
 
 ir::Props props(const ir::Node& n) {
@@ -40,11 +42,24 @@ double distance(const ir::Node& n, const V3& p) {
   return std::max(l, m * sgn(s.cos_angle * qx - s.sin_angle * qy));
 }
 
+constexpr ParamDoc k_docs[] = {
+    {"angle", "number", "30", "> 0, at most 180", "the cone's half-angle in degrees (180: the whole ball); fixed, not an expression of time"},
+    {"radius", "number", "1", "> 0", "the radius of the ball"},
+};
+
 }  // namespace
 
 namespace described {
-extern const Description SolidAngle{ir::Kind::SolidAngle, "solid_angle", "{solid_angle: {angle: 40, radius: 0.8}}",
-                                    count_of<SolidAngleP>(), lower, props, "sin_angle, cos_angle, radius", distance};
+extern const Description SolidAngle{.kind = ir::Kind::SolidAngle,
+                                    .yaml = "solid_angle",
+                                    .example = "{solid_angle: {angle: 40, radius: 0.8}}",
+                                    .param_count = count_of<SolidAngleP>(),
+                                    .lower = lower,
+                                    .props = props,
+                                    .call_args = "sin_angle, cos_angle, radius",
+                                    .distance = distance,
+                                    .summary = "The part of a ball inside a cone about +z with its apex at the centre.",
+                                    .docs = k_docs};
 }
 
 }  // namespace sdfc::kinds

@@ -22,13 +22,25 @@ double distance(const ir::Node& n, const V3& p) {
   return std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]) - view<SphereP>(n).radius;
 }
 
+constexpr ParamDoc k_docs[] = {
+    {"radius", "number", "1", "> 0", "its radius"},
+};
+
 }  // namespace
 
 namespace described {
-extern const Description Sphere{.kind = ir::Kind::Sphere, .yaml = "sphere", .example = "{sphere: {radius: 0.7}}",
-                                .param_count = count_of<SphereP>(), .lower = lower, .props = props,
-                                .call_args = "radius", .distance = distance, .dual_normals = true,
-                                .gradient_function = "sdg_sphere"};
+extern const Description Sphere{.kind = ir::Kind::Sphere,
+                                .yaml = "sphere",
+                                .example = "{sphere: {radius: 0.7}}",
+                                .param_count = count_of<SphereP>(),
+                                .lower = lower,
+                                .props = props,
+                                .call_args = "radius",
+                                .distance = distance,
+                                .dual_normals = true,
+                                .gradient_function = "sdg_sphere",
+                                .summary = "A ball centred on the origin.",
+                                .docs = k_docs};
 }
 
 }  // namespace sdfc::kinds

@@ -31,14 +31,26 @@ double distance(const ir::Node& n, const V3& p) {
   return std::hypot(ring, p[2]) - t.minor;
 }
 
+constexpr ParamDoc k_docs[] = {
+    {"major_radius", "number", "1", "> 0", "from the centre to the middle of the tube"},
+    {"minor_radius", "number", "0.25", "> 0", "the radius of the tube"},
+};
+
 }  // namespace
 
 namespace described {
-extern const Description Torus{.kind = ir::Kind::Torus, .yaml = "torus",
+extern const Description Torus{.kind = ir::Kind::Torus,
+                               .yaml = "torus",
                                .example = "{torus: {major_radius: 0.6, minor_radius: 0.2}}",
-                               .param_count = count_of<TorusP>(), .lower = lower, .props = props,
-                               .call_args = "major, minor", .distance = distance, .dual_normals = true,
-                               .gradient_function = "sdg_torus"};
+                               .param_count = count_of<TorusP>(),
+                               .lower = lower,
+                               .props = props,
+                               .call_args = "major, minor",
+                               .distance = distance,
+                               .dual_normals = true,
+                               .gradient_function = "sdg_torus",
+                               .summary = "A ring in the xy-plane around the z axis.",
+                               .docs = k_docs};
 }
 
 }  // namespace sdfc::kinds
