@@ -69,8 +69,12 @@ std::string distance_class(const kinds::Description& d) {
 }
 
 void write_kind(std::string& out, const kinds::Description& d) {
-  out += fmt::format("#### `{}`\n", d.yaml);
-  out += fmt::format("![{} {}](images/kinds/{}.png)\n\n", d.yaml, category_word(ir::info(d.kind).category), d.yaml);
+  // Two kinds can share a key (a mandelbulb with julia: is its own kind):
+  // the picture is named after the kind, as `sdfc check` prints it.
+  const std::string_view name = ir::info(d.kind).name;
+  if (name == d.yaml) out += fmt::format("#### `{}`\n", d.yaml);
+  else out += fmt::format("#### `{}` (`{}`)\n", d.yaml, name);
+  out += fmt::format("![{} {}](images/kinds/{}.png)\n\n", d.yaml, category_word(ir::info(d.kind).category), name);
   out += std::string(d.summary);
   if (std::string cls = distance_class(d); !cls.empty()) out += fmt::format(" Distance: {}.", cls);
   out += "\n\n";
@@ -112,7 +116,7 @@ std::string kind_reference_markdown() {
 std::string kind_list() {
   std::string out;
   for (const kinds::Description* d : kinds::all())
-    out += fmt::format("{}\t{}\t{}\t{}\n", d->yaml, category_word(ir::info(d->kind).category),
+    out += fmt::format("{}\t{}\t{}\t{}\n", ir::info(d->kind).name, category_word(ir::info(d->kind).category),
                        example_facts(*d).bounded ? "bounded" : "unbounded", d->example);
   return out;
 }

@@ -69,7 +69,7 @@ std::vector<KindScene> build() {
     if (b.finite()) cell.lo = b.lo, cell.hi = b.hi;
     std::string yaml = materials_of({cell}) + fmt::format("scene: {{material: {}, {}\n", cell.material(),
                                                           std::string(d->example).substr(1));
-    scenes.push_back({"alone_" + std::string(d->yaml), yaml, {cell}});
+    scenes.push_back({"alone_" + std::string(ir::info(d->kind).name), yaml, {cell}});
   }
   if (!bounded.empty()) scenes.insert(scenes.begin(), grid_scene("bounded_kinds", bounded));
   return scenes;

@@ -223,7 +223,7 @@ TEST_P(KindTableOracle, ReferenceAgreesWithBruteForce) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Kinds, KindTableOracle, ::testing::ValuesIn(kinds::all()),
-                         [](const auto& info) { return std::string(info.param->yaml); });
+                         [](const auto& info) { return std::string(ir::info(info.param->kind).name); });
 
 }  // namespace
 }  // namespace sdfc::conformance
