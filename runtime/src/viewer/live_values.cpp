@@ -98,6 +98,7 @@ bool LiveValues::unlockable(const std::string& path) const {
 
 LiveValues::Change LiveValues::apply(const std::string& path, double value) {
   edits_[path] = value;
+  last_change_ = std::chrono::steady_clock::now();
   for (const auto& s : scene_.slots())
     if (dotted_path(s->path) == path && value >= s->lo && value <= s->hi) {
       scene_.set_slot(s->index, value);
@@ -128,6 +129,7 @@ LiveValues::Change LiveValues::set(const std::string& path, double v) {
 ReloadResult LiveValues::poll() {
   ReloadResult r = scene_.adopt_build();
   if (r != ReloadResult::Reloaded) return r;
+  last_change_ = std::chrono::steady_clock::now();  // the quiet time before baking counts from the new kernel
   for (const auto& s : scene_.slots())
     if (auto it = edits_.find(dotted_path(s->path)); it != edits_.end() && it->second >= s->lo && it->second <= s->hi)
       scene_.set_slot(s->index, it->second);

@@ -8,6 +8,7 @@
 //  - a value that shapes the code (a count, a choice, a fractal constant):
 //    a background build with it baked, on each change.
 // bake() rebuilds with every value baked as a literal, the fastest kernel.
+#include <chrono>
 #include <map>
 #include <optional>
 #include <string>
@@ -37,6 +38,8 @@ class LiveValues {
   // Ctrl+Z / Ctrl+Y: the previous / next value of the last edits.
   bool undo();
   bool redo();
+  // When a value last changed (set, undo, redo) or a kernel arrived: the panel bakes after a quiet while.
+  std::chrono::steady_clock::time_point last_change() const { return last_change_; }
 
   enum class Saved { Written, ChangedOnDisk, NothingToSave };
   // Writes the changed values into the file, only their characters. A file
@@ -69,6 +72,7 @@ class LiveValues {
   std::map<std::string, std::optional<std::optional<std::pair<double, double>>>> can_unlock_;
   std::vector<std::string> unlocked_;       // paths the kernel reads per frame, in slot order
   std::vector<Step> done_, undone_;
+  std::chrono::steady_clock::time_point last_change_ = std::chrono::steady_clock::now();
 };
 
 // "a[1].b" -> "a.1.b": the form --set takes.

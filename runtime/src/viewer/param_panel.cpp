@@ -7,6 +7,7 @@
 #include <imgui_impl_sdlrenderer.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 
@@ -26,7 +27,7 @@ std::string join(const std::string& path, const std::string& step) { return path
 }  // namespace
 
 ParamPanel::ParamPanel(SDL_Window* window, SDL_Renderer* renderer, LiveValues& live, SceneSession& scene)
-    : live_(live), scene_(scene), last_change_(std::chrono::steady_clock::now()) {
+    : live_(live), scene_(scene) {
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini beside the user's scene
@@ -48,8 +49,8 @@ bool ParamPanel::handle(const SDL_Event& e) {
                      e.type == SDL_MOUSEWHEEL;
   if (e.type == SDL_KEYDOWN && (e.key.keysym.mod & KMOD_CTRL) && !io.WantTextInput) {
     switch (e.key.keysym.sym) {
-      case SDLK_z: if (live_.undo()) changed_ = true, last_change_ = std::chrono::steady_clock::now(); return true;
-      case SDLK_y: if (live_.redo()) changed_ = true, last_change_ = std::chrono::steady_clock::now(); return true;
+      case SDLK_z: changed_ = live_.undo() || changed_; return true;
+      case SDLK_y: changed_ = live_.redo() || changed_; return true;
       case SDLK_s: save(); return true;
       default: break;
     }
@@ -59,7 +60,6 @@ bool ParamPanel::handle(const SDL_Event& e) {
 
 void ParamPanel::touched(LiveValues::Change c) {
   changed_ = true;
-  last_change_ = std::chrono::steady_clock::now();
   confirm_overwrite_ = false;
   if (c == LiveValues::Change::Unlocking) status_ = "building (unlocking the value)...";
   if (c == LiveValues::Change::Rebuilding) status_ = "building (this value shapes the code)...";
@@ -79,7 +79,7 @@ bool ParamPanel::take_change() {
 }
 
 void ParamPanel::idle_bake() {
-  const double idle = std::chrono::duration<double>(std::chrono::steady_clock::now() - last_change_).count();
+  const double idle = std::chrono::duration<double>(std::chrono::steady_clock::now() - live_.last_change()).count();
   if (live_.unlocked_now() && !scene_.building() && idle > kIdleBakeSeconds) {
     live_.bake();
     status_ = "building (baking the values for speed)...";

@@ -4,7 +4,6 @@
 // an unlocked value was built for) or drag fields, colours as colour pickers;
 // changed values in yellow. Changes go to LiveValues; after a few idle
 // seconds the panel bakes the values into a fresh kernel.
-#include <chrono>
 #include <string>
 
 #include "viewer/live_values.hpp"
@@ -45,7 +44,6 @@ class ParamPanel {
   bool changed_ = false;
   bool confirm_overwrite_ = false;
   std::string status_;
-  std::chrono::steady_clock::time_point last_change_;
 };
 
 // Seconds of no change before the unlocked kernel is re-specialised.
