@@ -17,16 +17,14 @@
 #include "sdfc/codegen/emit_opencl.hpp"
 #include "sdfc/compile.hpp"
 #include "viewer/live_values.hpp"
+#include "viewer_test_support.hpp"
 
 namespace sdfc::viewer {
 namespace {
 
 namespace fs = std::filesystem;
 
-sdfrt::Device& device() {
-  static sdfrt::Device d = sdfrt::open_device();
-  return d;
-}
+using test::device;
 
 const std::string kScene =
     "# a sphere beside a box (comments and spacing must survive a save)\n"

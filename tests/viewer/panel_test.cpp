@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "viewer/viewer.hpp"
+#include "viewer_test_support.hpp"
 
 namespace sdfc::viewer {
 namespace {
@@ -34,19 +35,10 @@ void key(SDL_Keycode k, Uint16 mod = KMOD_NONE) {
   ASSERT_EQ(SDL_PushEvent(&e), 1) << SDL_GetError();
 }
 
-template <class Done>
-bool step_until(Viewer& v, Done done) {
-  auto t0 = std::chrono::steady_clock::now();
-  while (std::chrono::steady_clock::now() - t0 < std::chrono::seconds(90)) {
-    v.step();
-    if (done()) return true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
-  return false;
-}
+using test::step_until;
 
 TEST(Panel, LiveChangesUndoAndTheIdleBake) {
-  sdfrt::Device device = sdfrt::open_device();
+  sdfrt::Device& device = test::device();
   fs::path path = fs::path(::testing::TempDir()) / "panel_sphere.yaml";
   std::ofstream(path) << kSphere;
   SceneSession scene(device, {path.string(), {}, 16});

@@ -49,9 +49,7 @@ void Viewer::run() {
 void Viewer::toggle_panel() {
   if (!panel_) {
     panel_ = std::make_unique<ParamPanel>(window_.sdl_window(), window_.sdl_renderer(), live_, scene_);
-    window_.set_before_present([this] {
-      if (panel_shown_) panel_->draw();
-    });
+    window_.set_before_present([this] { if (panel_shown_) panel_->draw(); });
   }
   panel_shown_ = !panel_shown_;
   window_.present_again();
@@ -124,10 +122,8 @@ bool Viewer::step() {
     poll_scene();
   }
 
-  if (panel_) {
-    if (panel_->take_change()) moved_ = true;  // a new value or kernel: the picture starts over
-    panel_->idle_bake();
-  }
+  if (panel_ && panel_->take_change()) moved_ = true;  // a new value or kernel: the picture starts over
+  if (panel_) panel_->idle_bake();
 
   const Uint8* keys = SDL_GetKeyboardState(nullptr);
   MotionInput in;
