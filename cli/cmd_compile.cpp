@@ -1,4 +1,4 @@
-// sdfc compile SCENE --emit ast|ir|cl [--dump-after PASS|all] [-o FILE]
+// sdfc compile SCENE --emit ast|ir|cl [--dump-after PASS|all] [--unlock PATH[=LO:HI]] [-o FILE]
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -12,6 +12,7 @@
 #include "commands.hpp"
 #include "sdfc/compile.hpp"
 #include "sdfc/ir/printer.hpp"
+#include "sdfc/source/unlock.hpp"
 
 namespace sdfc::cli {
 
@@ -21,6 +22,7 @@ struct CompileArgs {
   SceneArgs scene;
   std::string emit = "cl";
   std::vector<std::string> dump_after;
+  std::vector<std::string> unlock;
   std::string output = "-";
   int simd_width = 0;
   int packet_rows = 0;
@@ -50,6 +52,9 @@ int run_compile(const CompileArgs& a) {
   }
   auto t0 = std::chrono::steady_clock::now();
   SourceValue doc = load_scene_source(a.scene.path, a.scene.sets);
+  std::vector<UnlockRequest> unlocks;
+  for (const auto& u : a.unlock) unlocks.push_back(parse_unlock(u));
+  const UnlockSlots slots = mark_unlocked(doc, unlocks);
   double parse_ms = ms(t0);
   std::string out;
   if (a.emit == "ast") {
@@ -74,6 +79,8 @@ int run_compile(const CompileArgs& a) {
   double emit_ms = ms(t1);
   if (a.emit == "ir" && a.dump_after.empty()) out += ir::print(m);
   if (a.emit == "cl") out += k.source;
+  for (const auto& s : slots)  // where each unlocked value sits, and the range its bounds assume
+    std::cerr << fmt::format("unlocked[{}] = {} ({}), range {} to {}\n", s->index, s->path, s->value, s->lo, s->hi);
   write_text_output(a.output, out);
   if (a.stats) {
     std::string t = fmt::format("{:<26}{:>10.3f} ms\n", "parse", parse_ms);
@@ -104,6 +111,9 @@ Action add_compile(CLI::App& app) {
   cmd->add_option("--emit", a->emit, "What to print: ast, ir or cl (the exact kernel 'render' builds)")
       ->check(CLI::IsMember({"ast", "ir", "cl"}));
   cmd->add_option("--dump-after", a->dump_after, "Print the IR after this pass (repeatable; 'all' for every pass)");
+  cmd->add_option("--unlock", a->unlock,
+                  "Read this value from the frame block instead of baking it (as the viewer's panel does); "
+                  "PATH walks keys and list indices (lights[0].intensity), =LO:HI the range it may take (repeatable)");
   cmd->add_option("-o,--output", a->output, "Write to FILE instead of stdout");
   cmd->add_option("--simd-width", a->simd_width, "Pixels per work-item: 1 (GPU form) or 2/4/8/16 (CPU packets); "
                                                  "default: the width render picks for a CPU device")

@@ -8,6 +8,7 @@
 #include "sdfc/frontend/lower_scene.hpp"
 #include "sdfc/scene_caps.hpp"
 #include "sdfc/source/overrides.hpp"
+#include "sdfc/source/unlock.hpp"
 #include "sdfc/source/yaml_loader.hpp"
 
 namespace sdfc {
@@ -56,10 +57,13 @@ ir::Module build_module(const SourceValue& doc, const std::string& source_name, 
   auto t0 = std::chrono::steady_clock::now();
   ir::Module m = lower_scene(doc, source_name);
   if (t) t->lower_ms = ms_since(t0);
+  const UnlockSlots slots = marked_slots(doc);
+  check_unlocked(doc, slots);
   if (after) after("lower", m);
   auto t1 = std::chrono::steady_clock::now();
   m = passes::run_pipeline(std::move(m), after, t ? &t->per_pass : nullptr);
   if (t) t->passes_ms = ms_since(t1);
+  m.unlocked = static_cast<int>(slots.size());
   check_kernel_size(m);
   check_scene_cost(m);
   return m;

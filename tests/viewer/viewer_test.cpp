@@ -19,16 +19,15 @@
 #include "sdfc/codegen/emit_opencl.hpp"
 #include "sdfc/compile.hpp"
 #include "viewer/viewer.hpp"
+#include "viewer_test_support.hpp"
 
 namespace sdfc::viewer {
 namespace {
 
 namespace fs = std::filesystem;
 
-sdfrt::Device& device() {
-  static sdfrt::Device d = sdfrt::open_device();
-  return d;
-}
+using test::device;
+using test::step_until;
 
 // The same kernel `sdfc render` builds, rendered offline at `camera`.
 std::vector<std::uint8_t> offline_render(const std::string& path, const ir::Camera& camera, int w, int h) {
@@ -100,18 +99,6 @@ scene:
   material: green
 )";
 
-// Steps until the scene's kernel generation or error changes (the file is
-// polled every 200 ms and acted on once its stamp is stable).
-template <class Done>
-bool step_until(Viewer& v, Done done) {
-  auto t0 = std::chrono::steady_clock::now();
-  while (std::chrono::steady_clock::now() - t0 < std::chrono::seconds(60)) {
-    v.step();
-    if (done()) return true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
-  return false;
-}
 
 std::array<int, 3> centre_pixel(const Viewer& v) {
   const auto& img = v.last_image();

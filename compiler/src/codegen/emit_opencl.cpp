@@ -76,6 +76,8 @@ EmittedKernel emit_opencl(const ir::Module& m, const EmitOptions& opt) {
   const int rows = opt.packet_rows > 0 ? opt.packet_rows : (wd == 16 ? 4 : 1);
   if (wd % rows != 0 || (rows & (rows - 1)) != 0)
     throw std::invalid_argument(fmt::format("packet rows must be a power of two dividing the SIMD width {}, not {}", wd, rows));
+  if (m.unlocked > 0 && opt.probe_kernel)  // the probes take no frame block to read the values from
+    throw std::invalid_argument("a kernel with unlocked values has no probe entries");
   if (m.root == ir::kNoNode || !m.graph->node(m.root).props.known)
     throw std::logic_error("emit_opencl needs a module after infer_properties");
   if (!m.analyses.known) throw std::logic_error("emit_opencl needs a module after the analyse pass");
@@ -105,7 +107,7 @@ EmittedKernel emit_opencl(const ir::Module& m, const EmitOptions& opt) {
   k.packet_rows = rows;
   k.planes.assign(abi::kImagePlanes.begin(), abi::kImagePlanes.end());
   if (opt.aovs) k.planes.insert(k.planes.end(), abi::kAovPlanes.begin(), abi::kAovPlanes.end());
-  k.frame_floats = abi::kFrameFloats;
+  k.frame_floats = abi::kFrameFloats + m.unlocked;
   std::string before, after;
   for (const auto* f : fns) {
     k.stdlib_functions.push_back(f->name);
@@ -119,7 +121,7 @@ EmittedKernel emit_opencl(const ir::Module& m, const EmitOptions& opt) {
                      ir::count_nodes(m));
   src += "// stdlib functions:";
   for (const auto& n : k.stdlib_functions) src += " " + n;
-  src += "\n\n" + detail::prelude(wd, rows, m.plan.march.precision, facts.uses_time);
+  src += "\n\n" + detail::prelude(wd, rows, m.plan.march.precision, facts.uses_time, m.unlocked);
   src += "\n// ---- stdlib ----" + before + trap_shapes + "\n";
   src += scene + "\n";
   if (!after.empty()) src += "// ---- stdlib that calls the scene ----" + after + "\n";

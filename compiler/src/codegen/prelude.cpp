@@ -8,7 +8,7 @@
 
 namespace sdfc::codegen::detail {
 
-std::string prelude(int width, int rows, ir::Precision precision, bool animated) {
+std::string prelude(int width, int rows, ir::Precision precision, bool animated, int unlocked) {
   bool dbl = precision == ir::Precision::Double;
   std::string scalar = dbl ? "double" : "float";
   std::string m = dbl ? "long" : "int";  // vector comparisons give lanes as wide as the operands
@@ -68,7 +68,12 @@ std::string prelude(int width, int rows, ir::Precision precision, bool animated)
   out += "#define M_TRUE ((mask)(-1))\n";
   out += "#define K(x) ((scalar)(x))  /* a literal in the kernel's precision, for builtin arguments */\n";
   out += "typedef struct { real x, y, z; } vec3;\n";
-  if (animated)
+  if (unlocked > 0)
+    out += fmt::format("// {} unlocked value(s) come after the frame block: the time and them are the first arguments of every "
+                       "function that evaluates the scene\n"
+                       "#define TIME_PARAM const scalar time, __global const float* unlocked,\n#define TIME_ARG time, unlocked,\n",
+                       unlocked);
+  else if (animated)
     out += "// the scene is animated: the frame time is the first argument of every function that evaluates it\n"
            "#define TIME_PARAM const scalar time,\n#define TIME_ARG time,\n";
   else

@@ -7,5 +7,6 @@ namespace sdfc::codegen::detail {
 // rows: pixel rows per packet (width / rows pixels per row).
 // animated: the scene uses time, which then reaches every function that
 // evaluates the scene as a first argument (TIME_PARAM / TIME_ARG).
-std::string prelude(int width, int rows, ir::Precision precision, bool animated);
+// `unlocked`: values the scene functions read from the frame block's tail (sdfc/source/unlock.hpp).
+std::string prelude(int width, int rows, ir::Precision precision, bool animated, int unlocked = 0);
 }

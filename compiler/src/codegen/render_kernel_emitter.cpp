@@ -38,7 +38,9 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
                      abi::kForward, abi::kRight, abi::kUp));
   w.line("#undef FRAME3");
   w.line(fmt::format("const scalar pixel_angle = (scalar)frame[{}];", abi::kPixelAngle));
-  if (m.analyses.uses_time) w.line(fmt::format("const scalar time = (scalar)frame[{}];  // the scene is animated", abi::kTime));
+  if (m.analyses.uses_time || m.unlocked > 0)
+    w.line(fmt::format("const scalar time = (scalar)frame[{}];  // the scene is animated", abi::kTime));
+  if (m.unlocked > 0) w.line(fmt::format("__global const float* unlocked = frame + {};  // the unlocked values", abi::kFrameFloats));
   w.line(aovs ? "real depth, mat, steps, iterations;" : "real depth, mat, steps;");
   w.line("vec3 normal;");
   std::string post;  // per-sample exposure and tone curve

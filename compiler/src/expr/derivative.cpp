@@ -57,7 +57,8 @@ ExprPtr d_call(const ExprPtr& e, std::string_view v) {
 ExprPtr d(const ExprPtr& e, std::string_view v) {
   const auto& a = e->args;
   switch (e->op) {
-    case Op::Number: return num(0);
+    case Op::Number:
+    case Op::Slot: return num(0);
     case Op::Var: return num(e->name == v ? 1 : 0);
     case Op::Neg: return neg(d(a[0], v));
     case Op::Add: return add(d(a[0], v), d(a[1], v));

@@ -43,7 +43,7 @@ bool uses(const ExprPtr& e, std::string_view var) {
 }
 
 bool is_constant(const ExprPtr& e) {
-  if (e->op == Op::Var) return false;
+  if (e->op == Op::Var || e->op == Op::Slot) return false;
   for (const auto& a : e->args)
     if (!is_constant(a)) return false;
   return true;
@@ -52,7 +52,8 @@ bool is_constant(const ExprPtr& e) {
 double evaluate(const ExprPtr& e, const Env& vars) {
   auto arg = [&](size_t i) { return evaluate(e->args[i], vars); };
   switch (e->op) {
-    case Op::Number: return e->value;
+    case Op::Number:
+    case Op::Slot: return e->value;
     case Op::Var: {
       auto it = vars.find(e->name);
       if (it == vars.end()) throw std::logic_error("expression variable '" + e->name + "' has no value");
@@ -74,7 +75,7 @@ double evaluate(const ExprPtr& e, const Env& vars) {
 }
 
 ExprPtr fold(const ExprPtr& e) {
-  if (e->op == Op::Number || e->op == Op::Var) return e;
+  if (e->op == Op::Number || e->op == Op::Var || e->op == Op::Slot) return e;
   auto f = std::make_shared<Expr>(*e);
   for (auto& a : f->args) a = fold(a);
   if (is_constant(f)) return number(evaluate(f, {}), e->offset);
@@ -105,6 +106,7 @@ std::string to_string(const ExprPtr& e) {
   switch (e->op) {
     case Op::Number: return fmt::format("{}", e->value);
     case Op::Var: return e->name;
+    case Op::Slot: return fmt::format("unlocked[{}]", e->slot);
     case Op::Neg: return "(-" + to_string(e->args[0]) + ")";
     case Op::Add: return bin("+");
     case Op::Sub: return bin("-");
@@ -127,6 +129,7 @@ std::string to_opencl(const ExprPtr& e, const std::function<std::string(std::str
   switch (e->op) {
     case Op::Number: return literal(e->value);
     case Op::Var: return variable(e->name);
+    case Op::Slot: return fmt::format("((scalar)unlocked[{}])", e->slot);
     case Op::Neg: return "(-" + sub(0) + ")";
     case Op::Add: return bin("+");
     case Op::Sub: return bin("-");

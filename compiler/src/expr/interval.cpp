@@ -76,6 +76,7 @@ Interval evaluate_interval(const ExprPtr& e, const IntervalEnv& vars) {
   auto arg = [&](size_t i) { return evaluate_interval(e->args[i], vars); };
   switch (e->op) {
     case Op::Number: return {e->value, e->value};
+    case Op::Slot: return {e->lo, e->hi};
     case Op::Var: {
       auto it = vars.find(e->name);
       if (it == vars.end()) throw std::logic_error("expression variable '" + e->name + "' has no range");

@@ -45,6 +45,7 @@ expr::ExprPtr ValueReader::expression(const SourceValue& v, bool* plain) {
 }
 
 Param ValueReader::param(const SourceValue& v, std::string_view what, Range r) {
+  if (v.unlock && v.is_scalar() && !v.quoted) return unlocked(v, what, r);
   bool plain = true;
   expr::ExprPtr e = expression(v, &plain);
   if (plain) return number(v, what, r);

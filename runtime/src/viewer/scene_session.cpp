@@ -3,6 +3,7 @@
 #include <sys/stat.h>
 
 #include <atomic>
+#include <chrono>
 #include <sdfrt/errors.hpp>
 
 #include "sdfc/codegen/emit_opencl.hpp"
@@ -41,20 +42,74 @@ SceneSession::Stamp SceneSession::read_stamp() const {
           static_cast<long long>(st.st_size), static_cast<long long>(st.st_ino)};
 }
 
-void SceneSession::compile() {
-  SourceValue doc = load_scene_source(options_.path, options_.sets);
-  auto m = std::make_unique<ir::Module>(build_module(doc, options_.path));
+SceneSession::Built SceneSession::build(sdfrt::Device& device, const SceneOptions& options) {
+  auto t0 = std::chrono::steady_clock::now();
+  SourceValue doc = load_scene_source(options.path, options.sets);
+  Built b;
+  b.slots = mark_unlocked(doc, options.unlocks);
+  auto m = std::make_unique<ir::Module>(build_module(doc, options.path));
   // With the AOV planes: the F1 overlay's steps/pixel is the mean of the
   // kernel's own `steps` plane (no second march). Costs a few stores a pixel.
   codegen::EmitOptions eo;
-  eo.simd_width = options_.simd_width;
+  eo.simd_width = options.simd_width;
   eo.aovs = true;
   codegen::EmittedKernel k = codegen::emit_opencl(*m, eo);
   sdfrt::KernelSpec spec{k.source, k.entry, k.simd_width, k.packet_rows, k.planes, ""};
-  auto r = std::make_unique<sdfrt::Renderer>(*device_, spec);
-  module_ = std::move(m);
-  renderer_ = std::move(r);
+  b.renderer = std::make_unique<sdfrt::Renderer>(device, spec);
+  b.module = std::move(m);
+  b.options = options;
+  b.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return b;
+}
+
+void SceneSession::adopt(Built b) {
+  module_ = std::move(b.module);
+  renderer_ = std::move(b.renderer);
+  slots_ = std::move(b.slots);
+  slot_values_ = unlocked_values(slots_);
+  options_ = std::move(b.options);
+  last_build_ms_ = b.ms;
   ++generation_;
+}
+
+void SceneSession::compile() {
+  ++builds_;
+  adopt(build(*device_, options_));
+}
+
+void SceneSession::rebuild_in_background(SceneOptions next) {
+  if (running_.valid()) {
+    queued_ = std::move(next);
+    return;
+  }
+  ++builds_;
+  sdfrt::Device* device = device_;
+  running_ = std::async(std::launch::async, [device, next = std::move(next)] { return build(*device, next); });
+}
+
+ReloadResult SceneSession::adopt_build() {
+  if (!running_.valid() || running_.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
+    return ReloadResult::Unchanged;
+  try {
+    Built b = running_.get();
+    if (queued_) {  // superseded while it built
+      SceneOptions next = std::move(*queued_);
+      queued_.reset();
+      rebuild_in_background(std::move(next));
+      return ReloadResult::Unchanged;
+    }
+    adopt(std::move(b));
+    error_.clear();
+    return ReloadResult::Reloaded;
+  } catch (const std::exception& e) {
+    error_ = e.what();
+  }
+  if (queued_) {
+    SceneOptions next = std::move(*queued_);
+    queued_.reset();
+    rebuild_in_background(std::move(next));
+  }
+  return ReloadResult::Failed;
 }
 
 ReloadResult SceneSession::poll() {
@@ -100,6 +155,7 @@ std::vector<float> SceneSession::frame_for(const ir::Camera& camera, int width, 
   if (plan.transport.integrator == ir::Transport::Integrator::Path)
     frame[abi::kFirstSample] = static_cast<float>(static_cast<long long>(pass) * plan.march.samples);
   if (offset_x != 0 || offset_y != 0) offset_frame_rays(frame, width, height, offset_x, offset_y);
+  frame.insert(frame.end(), slot_values_.begin(), slot_values_.end());  // the unlocked values follow the block
   return frame;
 }
 

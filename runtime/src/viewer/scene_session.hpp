@@ -7,12 +7,14 @@
 #include <sdfrt/renderer.hpp>
 
 #include <functional>
+#include <future>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "sdfc/ir/module.hpp"
+#include "sdfc/source/unlock.hpp"
 
 namespace sdfc::viewer {
 
@@ -20,6 +22,7 @@ struct SceneOptions {
   std::string path;
   std::vector<std::string> sets;  // --set overrides, reapplied on every reload
   int simd_width = 16;
+  std::vector<UnlockRequest> unlocks = {};  // values the kernel reads per frame (the panel's live values)
 };
 
 enum class ReloadResult { Unchanged, Reloaded, Failed };
@@ -47,6 +50,23 @@ class SceneSession {
   const std::string& error() const noexcept { return error_; }
   const SceneOptions& options() const noexcept { return options_; }
 
+  // Builds the scene with `next` options in a background thread while the
+  // current kernel keeps drawing; a build asked for while one runs waits and
+  // replaces it (the first one's result is dropped).
+  void rebuild_in_background(SceneOptions next);
+  bool building() const noexcept { return running_.valid(); }
+  // Swaps in a finished background build (Reloaded), or keeps the current
+  // kernel when it failed (Failed, error() says why); Unchanged while none is done.
+  ReloadResult adopt_build();
+  // Kernel builds so far, in the foreground or background, successful or not.
+  int builds() const noexcept { return builds_; }
+  double last_build_ms() const noexcept { return last_build_ms_; }
+  // The current kernel's unlocked values and what each is now.
+  const UnlockSlots& slots() const noexcept { return slots_; }
+  void set_slot(int index, double value) { slot_values_.at(size_t(index)) = static_cast<float>(value); }
+  // The file was written by the viewer itself: no reload for it.
+  void note_own_save() { loaded_ = read_stamp(); has_pending_ = false; }
+
   // The scene distance at p, from the CPU reference evaluator (speed scaling).
   double distance_at(const ir::Vec3d& p) const;
 
@@ -69,6 +89,15 @@ class SceneSession {
     bool operator==(const Stamp&) const = default;
   };
   Stamp read_stamp() const;
+  struct Built {
+    std::unique_ptr<ir::Module> module;
+    std::unique_ptr<sdfrt::Renderer> renderer;
+    UnlockSlots slots;
+    SceneOptions options;
+    double ms = 0;
+  };
+  static Built build(sdfrt::Device& device, const SceneOptions& options);  // throws
+  void adopt(Built b);
   void compile();  // throws; replaces module_/renderer_ only on success
   std::vector<float> frame_for(const ir::Camera& camera, int width, int height, double time, double offset_x,
                                double offset_y, int pass = 0) const;
@@ -81,6 +110,12 @@ class SceneSession {
   bool has_pending_ = false;
   int generation_ = 0;
   std::string error_;
+  UnlockSlots slots_;
+  std::vector<float> slot_values_;
+  std::future<Built> running_;
+  std::optional<SceneOptions> queued_;
+  int builds_ = 0;
+  double last_build_ms_ = 0;
 };
 
 // Shifts the rays of a frame block (codegen::frame_params layout) by

@@ -47,9 +47,15 @@ void SdlWindow::show(const std::uint8_t* rgb, int w, int h, const std::vector<st
     tex_h_ = h;
   }
   SDL_UpdateTexture(texture_, nullptr, rgb, w * 3);
+  overlay_ = overlay;
+  present_again();
+}
+
+void SdlWindow::present_again() {
   SDL_RenderClear(renderer_);
-  SDL_RenderCopy(renderer_, texture_, nullptr, nullptr);
-  draw_overlay(renderer_, overlay);
+  if (texture_) SDL_RenderCopy(renderer_, texture_, nullptr, nullptr);
+  draw_overlay(renderer_, overlay_);
+  if (before_present_) before_present_();
   SDL_RenderPresent(renderer_);
 }
 

@@ -2,6 +2,7 @@
 // The SDL2 window: shows an 8-bit RGB image of any size stretched to the
 // window, and owns SDL's video subsystem for its lifetime.
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,12 @@ class SdlWindow {
   // Uploads `rgb` (w*h*3 bytes, rows top to bottom) and presents it scaled
   // to the whole window, with `overlay` lines of text on top.
   void show(const std::uint8_t* rgb, int w, int h, const std::vector<std::string>& overlay = {});
+  // Shows the last image again (the panel changed, the picture did not).
+  void present_again();
+  // Drawn over the picture before every present (the parameter panel).
+  void set_before_present(std::function<void()> draw) { before_present_ = std::move(draw); }
+  SDL_Window* sdl_window() const noexcept { return window_; }
+  SDL_Renderer* sdl_renderer() const noexcept { return renderer_; }
   void set_title(const std::string& title);
   const std::string& title() const noexcept { return title_; }
   // SDL's video driver ("x11", "wayland", "offscreen", ...).
@@ -38,6 +45,8 @@ class SdlWindow {
   int width_, height_;
   int tex_w_ = 0, tex_h_ = 0;
   std::string title_;
+  std::vector<std::string> overlay_;
+  std::function<void()> before_present_;
 };
 
 }  // namespace sdfc::viewer

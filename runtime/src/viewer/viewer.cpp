@@ -36,7 +36,7 @@ double mean_steps(const sdfrt::FloatImage& img) {
 
 Viewer::Viewer(SceneSession& scene, SdlWindow& window, ViewerOptions options)
     : scene_(scene), window_(window), opt_(std::move(options)), rig_(codegen::fitted(scene.module().plan.camera, opt_.width, opt_.height)),
-      governor_(opt_.frame_budget_ms) {
+      governor_(opt_.frame_budget_ms), live_(scene) {
   last_tick_ = SDL_GetPerformanceCounter();
   update_title();
 }
@@ -46,7 +46,17 @@ void Viewer::run() {
   }
 }
 
+void Viewer::toggle_panel() {
+  if (!panel_) {
+    panel_ = std::make_unique<ParamPanel>(window_.sdl_window(), window_.sdl_renderer(), live_, scene_);
+    window_.set_before_present([this] { if (panel_shown_) panel_->draw(); });
+  }
+  panel_shown_ = !panel_shown_;
+  window_.present_again();
+}
+
 void Viewer::handle_event(const SDL_Event& e) {
+  if (panel_shown_ && panel_->handle(e)) return;
   switch (e.type) {
     case SDL_QUIT:
       quit_ = true;
@@ -70,6 +80,7 @@ void Viewer::handle_event(const SDL_Event& e) {
           moved_ = true;
           break;
         case SDLK_F1: toggle_overlay(); break;
+        case SDLK_F2: toggle_panel(); break;
         case SDLK_c: std::cout << camera_yaml() << std::endl; break;
         case SDLK_p:
           try {
@@ -111,6 +122,9 @@ bool Viewer::step() {
     poll_scene();
   }
 
+  if (panel_ && panel_->take_change()) moved_ = true;  // a new value or kernel: the picture starts over
+  if (panel_) panel_->idle_bake();
+
   const Uint8* keys = SDL_GetKeyboardState(nullptr);
   MotionInput in;
   in.forward = double(keys[SDL_SCANCODE_W]) - double(keys[SDL_SCANCODE_S]);
@@ -132,7 +146,8 @@ bool Viewer::step() {
   } else {
     // Converged: sleep until something happens (the file is still polled).
     last_.rendered = false;
-    if (SDL_WaitEventTimeout(&e, int(kFilePollMs))) handle_event(e);
+    if (SDL_WaitEventTimeout(&e, int(panel_shown_ ? 30 : kFilePollMs))) handle_event(e);
+    if (panel_shown_) window_.present_again();  // the panel answers the mouse though the picture is still
   }
   update_title();
   return !quit_;

@@ -5,12 +5,15 @@
 #include <sdfrt/float_image.hpp>
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "viewer/camera_rig.hpp"
 #include "viewer/frame_stats.hpp"
+#include "viewer/live_values.hpp"
+#include "viewer/param_panel.hpp"
 #include "viewer/resolution_governor.hpp"
 #include "viewer/sample_accumulator.hpp"
 #include "viewer/scene_session.hpp"
@@ -46,6 +49,10 @@ class Viewer {
   // F1: the stats overlay on or off (also in the window title).
   void toggle_overlay();
   bool overlay() const noexcept { return overlay_; }
+  // F2: the parameter panel on or off.
+  void toggle_panel();
+  bool panel_shown() const noexcept { return panel_shown_; }
+  LiveValues& live_values() noexcept { return live_; }
   // One pass of the loop: events, held keys, file poll, at most one render,
   // present. Returns false once asked to quit.
   bool step();
@@ -96,6 +103,9 @@ class Viewer {
   std::string last_screenshot_;
   std::vector<std::uint8_t> shown_;
   int shown_w_ = 0, shown_h_ = 0;
+  LiveValues live_;
+  std::unique_ptr<ParamPanel> panel_;  // made on the first F2
+  bool panel_shown_ = false;
 };
 
 }  // namespace sdfc::viewer

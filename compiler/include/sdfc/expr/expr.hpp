@@ -17,7 +17,10 @@
 
 namespace sdfc::expr {
 
-enum class Op { Number, Var, Neg, Add, Sub, Mul, Div, Pow, Call };
+// Slot: an unlocked scene value (sdfc/source/unlock.hpp), read from the frame
+// block at run time; it holds the value it was built with and the range the
+// compiler assumed for it. Only code makes one (no text parses to it).
+enum class Op { Number, Var, Neg, Add, Sub, Mul, Div, Pow, Call, Slot };
 
 struct Expr;
 using ExprPtr = std::shared_ptr<const Expr>;
@@ -28,6 +31,8 @@ struct Expr {
   std::string name;           // Var name or Call function name
   std::vector<ExprPtr> args;  // operands / call arguments
   int offset = 0;             // 0-based offset of this node in the source string
+  int slot = 0;               // Slot: its index among the unlocked values
+  double lo = 0, hi = 0;      // Slot: the range every run-time value stays in
 };
 
 // Parses `text`. `at` is the location of the string's first character in the
@@ -73,6 +78,10 @@ ExprPtr number(double v);
 ExprPtr binary(Op op, ExprPtr a, ExprPtr b);  // Add, Sub, Mul, Div, Pow
 ExprPtr negate(ExprPtr a);
 ExprPtr call(std::string name, std::vector<ExprPtr> args);
+// Unlocked value number `index`, now `value`, always within [lo, hi]. It
+// evaluates to `value`, its interval is [lo, hi], and the kernel reads it as
+// `unlocked[index]`.
+ExprPtr slot(int index, double value, double lo, double hi);
 // e with `var` replaced by `value`, folded (an animated value at one time).
 ExprPtr substitute(const ExprPtr& e, std::string_view var, double value);
 

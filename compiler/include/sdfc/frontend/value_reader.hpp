@@ -28,6 +28,11 @@ struct Range {
   static Range closed(double lo, double hi) { return {lo, hi, false}; }
 };
 
+// The range an unlocked value `x` may take at run time when none is asked
+// for: x +- max(|x|, 1), kept inside what the reader accepts (r). The panel's
+// slider spans it; a value outside it means a rebuild with a new range.
+std::pair<double, double> unlock_range(double x, const Range& r);
+
 // A number that may be animated: an expression of `time` written as a
 // string. `value` is its value at time 0; lo and hi bound it for every time
 // in [0, expr::kMaxTime] (interval arithmetic); a static value has lo = hi.
@@ -66,6 +71,8 @@ class ValueReader {
   // A quoted expression: parsed (null after a reported error), else nullptr
   // with *plain set when the value is not an expression at all.
   expr::ExprPtr expression(const SourceValue& v, bool* plain);
+  // A plain number marked by mark_unlocked: a slot the kernel reads per frame (read_unlocked.cpp).
+  Param unlocked(const SourceValue& v, std::string_view what, Range r);
   DiagnosticSink& sink_;
 };
 

@@ -15,6 +15,7 @@ struct Module {
   RenderPlan plan;
   std::string source_name;  // the scene file, for comments in the kernel
   Analyses analyses;        // recorded by the analyse pass, read by the emitters
+  int unlocked = 0;         // values the kernel reads after the frame block (sdfc/source/unlock.hpp)
 };
 
 }  // namespace sdfc::ir

@@ -2,6 +2,7 @@
 // The scene as written: a tree of YAML values, each with its source location.
 // This is the "AST" of `sdfc compile --emit ast`; --set overrides edit it
 // before the schema check, so errors in overrides point at the override.
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -10,6 +11,8 @@
 #include "sdfc/support/diagnostics.hpp"
 
 namespace sdfc {
+
+struct UnlockSlot;  // sdfc/source/unlock.hpp
 
 struct SourceValue {
   enum class Kind { Null, Scalar, Sequence, Map };
@@ -29,6 +32,7 @@ struct SourceValue {
   bool quoted = false;  // scalar was quoted: "8" is a string, 8 a number
   std::vector<SourceValue> items;                             // Sequence
   std::vector<std::pair<SourceValue, SourceValue>> entries;  // Map, in file order
+  std::shared_ptr<UnlockSlot> unlock;  // set by mark_unlocked only, never by the loader
 
   bool is_map() const { return kind == Kind::Map; }
   bool is_seq() const { return kind == Kind::Sequence; }
