@@ -5,6 +5,8 @@
 // Sphere tracing as march_sphere_trace, on side * scene_dist: side 1 marches
 // outside the surfaces, side -1 inside a solid (a path inside glass), where
 // the negated distance is the distance to the surface from within.
+// A copy rather than a change to march_sphere_trace, so kernels without
+// glass stay as they were.
 inline mask march_signed(TIME_PARAM vec3 ro, vec3 rd, real side, real t0, real t1, mask active,
                          real pixel_angle, real hit_eps, real step_factor,
                          int max_steps, real* t_out, real* steps)
