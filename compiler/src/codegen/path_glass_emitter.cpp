@@ -23,7 +23,7 @@ void glass_scatter(CodeWriter& w) {
   w.line("// a refracted path starts on the other side of the surface, inside the solid or back outside it");
   w.line("start = v3_select(start, v3_mad(p, n, -2.0f * footprint), refract);");
   w.line("sigma_in = v3_select(sigma_in, sigma, refract & !inside);");
-  w.line("inside = (inside & !refract) | (!inside & refract);");
+  w.line("inside = (inside & !refract) | (refract & !inside);");
 }
 
 }  // namespace sdfc::codegen::detail
