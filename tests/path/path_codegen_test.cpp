@@ -21,7 +21,7 @@ bool has(const std::string& s, const std::string& what) { return s.find(what) !=
 
 // Names only the path integrator brings into a kernel.
 const char* kPathMarks[] = {"sdfc_path", "path_rand", "path_cosine_dir", "path_glossy_eval", "path_ggx", "path_surface",
-                            "emission", "path_firefly", "roulette"};
+                            "emission", "path_firefly", "roulette", "march_signed", "glass_fresnel", "glass_absorb"};
 
 const std::string kScene = "lights:\n  - directional: {direction: [0, 0, -1], shadows: soft}\nscene:\n  union:\n"
                            "    - plane: {}\n    - sphere: {radius: 1}\n      material: m\n";
@@ -43,6 +43,7 @@ TEST(PathCodegen, DirectKernelsHaveNoPathCode) {
   std::string plain = kernel_of("materials: {m: {color: [0.5, 0.5, 0.5]}}\n" + kScene);
   EXPECT_EQ(kernel_of("materials: {m: {color: [0.5, 0.5, 0.5], roughness: 0.2, metalness: 1, emission: [1, 0, 0]}}\n" + kScene),
             plain);
+  EXPECT_EQ(kernel_of("materials: {m: {color: [0.5, 0.5, 0.5], glass: {ior: 1.4, absorption: [1, 0, 0]}}}\n" + kScene), plain);
   EXPECT_TRUE(kernel_of("render: {integrator: direct, max_bounces: 9, firefly_clamp: 4}\nmaterials: {m: {color: [0.5, 0.5, 0.5]}}\n" + kScene) ==
               kernel_of("render: {width: 1280}\nmaterials: {m: {color: [0.5, 0.5, 0.5]}}\n" + kScene));
 }
@@ -63,6 +64,8 @@ TEST(PathCodegen, EachPartOnlyWhenUsed) {
       {"render: {integrator: path}\nmaterials: {m: {metalness: 1}}\n", with({"path_glossy_eval", "path_ggx", "path_surface"})},
       {"render: {integrator: path}\nmaterials: {m: {emission: [2, 1, 0]}}\n", with({"path_surface", "emission"})},
       {"render: {integrator: path, firefly_clamp: 5}\nmaterials: {m: {}}\n", with({"path_firefly"})},
+      {"render: {integrator: path}\nmaterials: {m: {glass: {ior: 1.33}}}\n",
+       with({"path_surface", "march_signed", "glass_fresnel", "glass_absorb"})},
   };
   for (const auto& c : cases) {
     for (int width : {1, 16}) {
@@ -106,7 +109,11 @@ TEST(PathCodegen, BadSettingsAreLocated) {
   for (const char* bad : {"render: {integrator: paths}\n", "render: {integrator: path, max_bounces: 0}\n",
                           "render: {firefly_clamp: -1}\n", "materials: {m: {roughness: 2}}\n",
                           "materials: {m: {emission: [1, 1]}}\n", "background: {sky: {turbidity: 20}}\n",
-                          "background: {sky: {sun_direction: [0, 0, 0]}}\n", "background: {sky: {sun: 1}}\n"}) {
+                          "background: {sky: {sun_direction: [0, 0, 0]}}\n", "background: {sky: {sun: 1}}\n",
+                          "materials: {m: {glass: {ior: 0.5}}}\n", "materials: {m: {glass: {}, roughness: 0.1}}\n",
+                          "materials: {m: {glass: {absorption: [1, 1, 1], color: [1, 1, 1]}}}\n",
+                          "materials: {m: {glass: {distance: 2}}}\n", "materials: {m: {glass: 1}}\n",
+                          "materials: {m: {glass: {ior: 1.5, tint: [1, 0, 0]}}}\n"}) {
     try {
       test::compile_text(std::string(bad) + "scene: {sphere: {}}\n");
       ADD_FAILURE() << "accepted " << bad;

@@ -24,7 +24,12 @@ std::string radiance_function(const ir::Module& m, std::set<std::string>& used);
 // and path_surface() for them (path_surface_emitter.cpp).
 bool any_glossy(const ir::RenderPlan& p);
 bool any_emission(const ir::RenderPlan& p);
-std::string surface_table(const ir::RenderPlan& plan, bool glossy, bool emission, const Literals& lit);
+bool any_glass(const ir::RenderPlan& p);
+std::string surface_table(const ir::RenderPlan& plan, bool glossy, bool emission, bool glass, const Literals& lit);
+// A glass vertex's scattering (path_glass_emitter.cpp): Fresnel picks the
+// reflected or refracted direction of the lanes on glass, into nd, and the
+// side of the surface the next segment starts on.
+void glass_scatter(CodeWriter& w);
 std::string path_functions(const ir::Module& m, const ir::RenderPlan& plan, const Literals& lit, std::set<std::string>& used);
 // The background or sky along `rd`, as an expression (background_emitter.cpp).
 std::string background_call(const ir::RenderPlan& plan, const Literals& lit, std::set<std::string>& used);

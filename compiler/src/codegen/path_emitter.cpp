@@ -3,8 +3,9 @@
 // from the camera: the environment where it leaves the scene, emission where
 // it hits, next-event estimation to every light at each vertex (the
 // DE-marched shadow rays of the direct integrator), a cosine-weighted
-// diffuse or GGX bounce, Russian roulette. Glossy and emission code is
-// emitted only for scenes whose materials have them.
+// diffuse or GGX bounce or glass (path_glass_emitter.cpp), Russian
+// roulette. Glossy, emission and glass code is emitted only for scenes
+// whose materials have them.
 #include <fmt/format.h>
 
 #include <set>
@@ -20,12 +21,14 @@ namespace {
 // sdfc_path_hit: the march of one path segment from a virtual origin ro
 // that lies `from` behind the segment's start, so t counts the path's whole
 // length and hit epsilons and normal steps follow the pixel footprint there.
-std::string hit_function(const ir::Module& m, const Literals& lit, std::set<std::string>& used) {
+// With glass it takes the side it marches on (-1 inside a solid).
+std::string hit_function(const ir::Module& m, const Literals& lit, std::set<std::string>& used, bool glass) {
   const ir::MarchSettings& s = m.plan.march;
   const bool blended = m.analyses.material_blend;
   CodeWriter w;
   w.line("// ---- one segment of a path: march from ro + from * rd, then the surface at the hit ----");
-  w.line("mask sdfc_path_hit(TIME_PARAM vec3 ro, vec3 rd, mask active, real pixel_angle, real from, real jitter,");
+  w.line(std::string("mask sdfc_path_hit(TIME_PARAM vec3 ro, vec3 rd, ") + (glass ? "real side, " : "") +
+         "mask active, real pixel_angle, real from, real jitter,");
   w.line("                   real* t_out, vec3* n_out, real* id_out, vec3* albedo_out, real* steps_out, mask* escaped)");
   w.open("{");
   if (bounds_clip(w, m, lit, used)) {
@@ -43,7 +46,11 @@ std::string hit_function(const ir::Module& m, const Literals& lit, std::set<std:
   w.line("active = active & (t0 < t1);");
   w.line("const mask entered = active;");
   w.line("real t, steps;");
-  if (s.refine == ir::MarchSettings::Refine::Bisection) {
+  if (glass) {
+    used.insert("march_signed");
+    w.line(fmt::format("mask hit = march_signed(TIME_ARG ro, rd, side, t0, t1, active, pixel_angle, {}, {}, {}, &t, &steps);",
+                       lit.real(s.hit_epsilon), lit.real(s.step_factor), s.max_steps));
+  } else if (s.refine == ir::MarchSettings::Refine::Bisection) {
     used.insert("march_sphere_trace_refined");
     w.line("real closest;");
     w.line(fmt::format("mask hit = march_sphere_trace_refined(TIME_ARG ro, rd, t0, t1, active, pixel_angle, {}, {}, {}, &t, &steps, &closest);",
@@ -95,7 +102,7 @@ std::string hit_function(const ir::Module& m, const Literals& lit, std::set<std:
 
 std::string path_functions(const ir::Module& m, const ir::RenderPlan& plan, const Literals& lit, std::set<std::string>& used) {
   const ir::Transport& tr = plan.transport;
-  const bool glossy = any_glossy(plan), emission = any_emission(plan);
+  const bool glossy = any_glossy(plan), emission = any_emission(plan), glass = any_glass(plan);
   const ir::RayBounds* bounds = m.analyses.ray_bounds ? &*m.analyses.ray_bounds : nullptr;
   const bool clamp = tr.clamp > 0;
   used.insert("path_rand");
@@ -105,9 +112,13 @@ std::string path_functions(const ir::Module& m, const ir::RenderPlan& plan, cons
     used.insert("path_glossy_eval");
     used.insert("path_ggx_half");
   }
+  if (glass) {
+    used.insert("glass_fresnel");
+    used.insert("glass_absorb");
+  }
   std::string out = detail::emit_material_table(plan, m.analyses, lit);
-  if (glossy || emission) out += surface_table(plan, glossy, emission, lit) + "\n";
-  out += hit_function(m, lit, used) + "\n";
+  if (glossy || emission || glass) out += surface_table(plan, glossy, emission, glass, lit) + "\n";
+  out += hit_function(m, lit, used, glass) + "\n";
 
   CodeWriter w;
   // Light that has scattered `order` times is clamped from the second on (indirect light).
@@ -122,14 +133,24 @@ std::string path_functions(const ir::Module& m, const ir::RenderPlan& plan, cons
   w.line("vec3 sum = v3_splat(0.0f), thr = v3_splat(1.0f);  // the light gathered; the path's throughput");
   w.line("mask alive = M_TRUE;");
   w.line("real from = 0.0f;  // the path's length up to the start of this segment");
+  if (glass) {
+    w.line("mask inside = !M_TRUE;  // the lanes whose path is inside a glass solid");
+    w.line("vec3 sigma_in = v3_splat(0.0f);  // the absorption of the glass they are in");
+  }
   w.line(fmt::format("// render.max_bounces: {}; Russian roulette after {} bounces", tr.max_bounces, tr.roulette_after));
   w.line(fmt::format("for (int seg = 0; seg <= {} && M_ANY(alive); ++seg)", tr.max_bounces));
   w.open("{");
   w.line("real t, id, st;");
   w.line("vec3 n, albedo;");
   w.line("mask escaped;");
-  w.line("mask hit = sdfc_path_hit(TIME_ARG ro, rd, alive, pixel_angle, from, jitter, &t, &n, &id, &albedo, &st, &escaped);");
+  w.line(std::string("mask hit = sdfc_path_hit(TIME_ARG ro, rd, ") + (glass ? "SEL((real)(1.0f), (real)(-1.0f), inside), " : "") +
+         "alive, pixel_angle, from, jitter, &t, &n, &id, &albedo, &st, &escaped);");
   w.line("hit = hit & alive;");
+  if (glass) {
+    w.line("// Beer-Lambert along the segment inside glass; a path that does not find its way out is lost");
+    w.line("thr = v3_select(thr, v3_mul(thr, glass_absorb(sigma_in, t - from)), inside);");
+    w.line("escaped = escaped & !inside;");
+  }
   w.line("if (seg == 0)");
   w.open("{");
   w.line("*depth = SEL((real)(-1.0f), t, hit);  // -1 marks a miss");
@@ -144,10 +165,16 @@ std::string path_functions(const ir::Module& m, const ir::RenderPlan& plan, cons
   w.line("vec3 p = v3_mad(ro, rd, t), v = v3_scale(rd, -1.0f);");
   w.line("// a normal that faces away from the ray (a finite difference across a thin sheet) is turned round");
   w.line("n = v3_select(n, v3_scale(n, -1.0f), v3_dot(n, v) < 0.0f);");
-  if (glossy || emission) {
+  if (glossy || emission || glass) {
     if (emission) w.line("vec3 emission;");
     if (glossy) w.line("real alpha, metal; mask lobe;");
-    w.line(std::string("path_surface(id") + (emission ? ", &emission" : "") + (glossy ? ", &alpha, &metal, &lobe" : "") + ");");
+    if (glass) w.line("mask on_glass; real ior; vec3 sigma;");
+    w.line(std::string("path_surface(id") + (emission ? ", &emission" : "") + (glossy ? ", &alpha, &metal, &lobe" : "") +
+           (glass ? ", &on_glass, &ior, &sigma" : "") + ");");
+  }
+  if (glass) {
+    w.line("on_glass = on_glass & alive;");
+    w.line("alive = alive & (on_glass | !inside);  // inside glass, only a glass surface lets the path out");
   }
   if (emission) add("v3_mul(thr, emission)", "alive", "seg");
   w.line(fmt::format("if (seg == {}) break;  // no more scattering", tr.max_bounces));
@@ -188,12 +215,13 @@ std::string path_functions(const ir::Module& m, const ir::RenderPlan& plan, cons
     std::string sh = shadow_call(l, "l", "tmax", lit, bounds, used);
     std::string term = fmt::format("v3_mul(thr, v3_mul({}, e))", f);
     if (!sh.empty()) term = fmt::format("v3_scale({}, {})", term, sh);
-    add(term, "hit", "seg + 1");
+    add(term, glass ? "hit & !on_glass" : "hit", "seg + 1");  // glass reflects and refracts only in delta directions
     w.close("}");
   }
   if (!any_light) w.line("(void)shadow_origin;");
   w.line(fmt::format("const scalar dim = (scalar)(seg * 4);  // four random numbers per bounce"));
   w.line("real u0 = path_rand(px, py, sf, dim), u1 = path_rand(px, py, sf, dim + 1.0f), u2 = path_rand(px, py, sf, dim + 2.0f);");
+  if (glass) w.line("const vec3 thr_in = thr;");
   if (glossy) {
     w.line("// pick the GGX lobe with the probability of its Fresnel reflectance, else the diffuse one");
     w.line("real nv = fmax(v3_dot(n, v), K(1e-4f));");
@@ -213,9 +241,13 @@ std::string path_functions(const ir::Module& m, const ir::RenderPlan& plan, cons
     w.line("vec3 nd = v3_select(ld, ls, take_spec);");
   } else {
     w.line("// a cosine-weighted diffuse bounce: f cos / pdf = albedo");
-    w.line("(void)u0;");
+    if (!glass) w.line("(void)u0;");
     w.line("vec3 nd = path_cosine_dir(n, u1, u2);");
     w.line("thr = v3_mul(thr, albedo);");
+  }
+  if (glass) {
+    w.line("vec3 start = shadow_origin;");
+    glass_scatter(w);
   }
   w.line(fmt::format("if (seg >= {})", tr.roulette_after));
   w.open("{");
@@ -228,7 +260,7 @@ std::string path_functions(const ir::Module& m, const ir::RenderPlan& plan, cons
   w.line("alive = alive & (v3_max_comp(thr) > 0.0f);");
   w.line("// the next segment starts two footprints off the surface; its virtual origin lies t behind that");
   w.line("rd = nd;");
-  w.line("ro = v3_mad(shadow_origin, rd, -t);");
+  w.line(glass ? "ro = v3_mad(start, rd, -t);" : "ro = v3_mad(shadow_origin, rd, -t);");
   w.line("from = t;");
   w.line("jitter = 0.0f;  // render.dither: the camera ray only");
   w.close("}");

@@ -157,7 +157,7 @@ void read_materials(ValueReader& r, const SourceValue& v, ir::RenderPlan& plan) 
       continue;
     }
     MapReader m(r, body, "material '" + md.name + "'", {"color", "specular", "shininess", "orbit_trap", "coloring", "reflectivity",
-                                                            "roughness", "metalness", "emission"});
+                                                            "roughness", "metalness", "emission", "glass"});
     md.color = m.vec3("color", md.color, Range::closed(0, 1));
     md.specular = m.number("specular", md.specular, Range::closed(0, 100));
     md.shininess = m.number("shininess", md.shininess, Range::closed(1, 10000));

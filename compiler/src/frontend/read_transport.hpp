@@ -1,7 +1,7 @@
 #pragma once
 // The path integrator's settings (issue 24): `render.integrator`,
 // `render.max_bounces`, `render.firefly_clamp`, and a material's `roughness`,
-// `metalness` and `emission` (docs/scene-format.md, "Light transport").
+// `metalness`, `emission` and `glass` (docs/scene-format.md, "Light transport").
 // The keys are allowed by the readers of `render` and of a material; these
 // functions only read them.
 #include "sdfc/frontend/value_reader.hpp"
@@ -16,4 +16,7 @@ void read_sky(ValueReader& r, const SourceValue& v, ir::Background& bg);
 // With a sky, its sun as a directional light with hard shadows.
 void add_sun(ir::RenderPlan& plan);
 void read_material_pbr(ValueReader& r, const SourceValue& body, const std::string& what, ir::MaterialDef& md);
+// A material's `glass:` map; `lobe` is its roughness or metalness key, if any
+// (smooth glass has neither).
+void read_glass(ValueReader& r, const SourceValue& v, const std::string& what, ir::MaterialDef& md, const SourceValue* lobe);
 }  // namespace sdfc::frontend

@@ -229,6 +229,12 @@ struct MaterialDef {
   bool glossy = false;
   double roughness = 0.5, metalness = 0;
   Vec3d emission{0, 0, 0};
+  // A smooth dielectric (`glass:`, path integrator only): Fresnel
+  // reflection and refraction with index `ior`, light inside dimmed by
+  // exp(-absorption * distance) per channel (Beer-Lambert).
+  bool glass = false;
+  double ior = 1.5;
+  Vec3d absorption{0, 0, 0};
   SourceLoc loc;
 };
 
