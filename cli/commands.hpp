@@ -19,5 +19,6 @@ Action add_compare(CLI::App& app);
 Action add_merge(CLI::App& app);  // cmd_merge.cpp: a still's region files into its image
 Action add_farm(CLI::App& app);   // cmd_farm.cpp: Slurm job scripts
 Action add_mesh(CLI::App& app);
+Action add_import(CLI::App& app);  // cmd_import.cpp: Mandelbulber .fract to YAML
 
 }  // namespace sdfc::cli

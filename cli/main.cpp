@@ -41,6 +41,7 @@ int main(int argc, char** argv) {
   reg(add_merge);
   reg(add_farm);
   reg(add_mesh);
+  reg(add_import);
 
   try {
     app.parse(argc, argv);
