@@ -126,6 +126,11 @@ std::string formula_name(int id) {
   return f ? f->name : fmt::format("formula id {}", id);
 }
 
+std::string formula_label(int id) {
+  const Formula* f = find_formula(id);
+  return f ? fmt::format("formula '{}' (id {})", f->name, id) : fmt::format("formula id {}", id);
+}
+
 void unsupported_setting(const FormulaInput& in, const std::string& key, const std::string& what) {
   SourceLoc at = in.main.given(key) ? in.main.loc(key) : in.fractal.given(key) ? in.fractal.loc(key) : in.loc;
   fail(at, fmt::format("formula '{}' (id {}) with {} = {} is not supported yet", in.name, in.id, key,

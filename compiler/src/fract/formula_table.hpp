@@ -41,6 +41,9 @@ const Formula* find_formula(int id);
 // The formula's name as Mandelbulber shows it, "formula id N" when unknown.
 std::string formula_name(int id);
 
+// "formula 'NAME' (id N)", or "formula id N" for an id 2.20 does not know.
+std::string formula_label(int id);
+
 // Throws: "formula 'NAME' (id N) with KEY = ... is not supported yet".
 [[noreturn]] void unsupported_setting(const FormulaInput& in, const std::string& key, const std::string& what);
 

@@ -45,7 +45,7 @@ void refuse_unmapped_shape_keys(const Params& main) {
   if (main.given("iteration_threshold_mode") && main.boolean("iteration_threshold_mode"))
     refuse("iteration_threshold_mode", "the iteration threshold mode");
   if (main.given("legacy_coordinate_system") && main.boolean("legacy_coordinate_system"))
-    refuse("legacy_coordinate_system", "the legacy coordinate system");
+    refuse("legacy_coordinate_system", "the legacy coordinate system (an image mirrored top to bottom)");
   for (const auto& [key, e] : main.section().entries)
     if (key.rfind("primitive_", 0) == 0 && key.size() > 8 && key.compare(key.size() - 8, 8, "_enabled") == 0 &&
         (e.value == "true" || e.value == "1"))
@@ -56,7 +56,7 @@ Node formula_node(const Slot& s, const File& file, const Params& main, Warnings&
   const Formula* f = find_formula(s.id);
   std::string name = f ? f->name : formula_name(s.id);
   if (!f || !f->write)
-    fail(s.loc, fmt::format("formula '{}' (id {}) is not supported yet", name, s.id),
+    fail(s.loc, formula_label(s.id) + " is not supported yet",
          "sdfc imports the Mandelbox (8), the Menger sponge (7) and the quaternion in julia mode (5)");
   Params fractal(file.fractal[size_t(s.n - 1)], true);
   bool use_default = main.boolean("use_default_bailout");
@@ -87,8 +87,12 @@ Node import_geometry(const File& file, const Params& main, Warnings& w) {
     slots.resize(1);
   }
   if (!boolean_mode && hybrid && slots.size() > 1) {
+    for (const Slot& s : slots) {  // name the first formula that has no mapping at all
+      const Formula* f = find_formula(s.id);
+      if (!f || !f->write) fail(s.loc, formula_label(s.id) + " is not supported yet (in a hybrid)");
+    }
     std::string names;
-    for (const Slot& s : slots) names += (names.empty() ? "" : ", ") + fmt::format("'{}' ({})", formula_name(s.id), s.id);
+    for (const Slot& s : slots) names += (names.empty() ? "" : ", ") + formula_label(s.id);
     fail(slots[0].loc, fmt::format("a hybrid of {} is not supported yet", names),
          "sdfc's hybrid node mixes Mandelbulb and Mandelbox steps; Mandelbulber's Mandelbulb (id 2) has another shape");
   }
