@@ -22,12 +22,11 @@ std::string from(const FormulaInput& in, const std::string& key) {
   return fmt::format("[fractal_{}] {}", in.slot, key);
 }
 
-// Mandelbulber's N counts iterations for every formula; sdfc caps each kind.
-int capped_iterations(const FormulaInput& in, int cap, const char* kind) {
-  if (in.iterations <= cap) return std::max(in.iterations, 1);
-  in.warnings->push_back(fmt::format("N = {}: {} takes at most {} iterations; {} are used (the surface is the same "
-                                     "to well below a pixel)", in.iterations, kind, cap, cap));
-  return cap;
+// Mandelbulber's N counts iterations for every formula; sdfc caps each
+// kind where more iterations change nothing visible. The field's comment says so.
+Field iterations_field(const FormulaInput& in, int cap) {
+  if (in.iterations <= cap) return {"iterations", std::to_string(std::max(in.iterations, 1)), "N"};
+  return {"iterations", std::to_string(cap), fmt::format("N = {}, sdfc's cap (no visible difference)", in.iterations)};
 }
 
 void require_c_added(const FormulaInput& in) {
@@ -60,7 +59,7 @@ Node mandelbox(const FormulaInput& in) {
               {"min_radius", num(min_r), from(in, "mandelbox_folding_min_radius")},
               {"fixed_radius", num(fixed_r), from(in, "mandelbox_folding_fixed_radius")},
               {"folding_limit", num(limit), from(in, "mandelbox_folding_limit")},
-              {"iterations", std::to_string(capped_iterations(in, 200, "mandelbox")), "N"}};
+              iterations_field(in, 200)};
   if (in.julia) {
     for (double c : in.julia_c)
       if (std::fabs(c) > 10) unsupported_setting(in, "julia_c", vec(in.julia_c));
@@ -78,7 +77,7 @@ Node menger_sponge(const FormulaInput& in) {
     unsupported_setting(in, fmt::format("dont_add_c_constant_{}", in.slot), "true (adds c)");
   Node n{"menger", fmt::format("formula_{} {} ({})", in.slot, in.id, in.name), {}, {}, {}};
   n.fields = {{"scale", "3", from(in, "transf_scale_3")},
-              {"iterations", std::to_string(capped_iterations(in, 12, "menger")), "N"}};
+              iterations_field(in, 12)};
   return n;
 }
 
@@ -94,7 +93,7 @@ Node quaternion(const FormulaInput& in) {
   Node n{"julia", fmt::format("formula_{} {} ({})", in.slot, in.id, in.name), {}, {}, {}};
   n.fields = {{"c", vec(std::vector<double>{in.julia_c[0], in.julia_c[1], in.julia_c[2], 0}), "julia_c (w = 0)"},
               {"degree", "2", ""},
-              {"iterations", std::to_string(capped_iterations(in, 1000, "julia")), "N"},
+              iterations_field(in, 1000),
               {"bailout", num(in.bailout), "bailout"}};
   return n;
 }
