@@ -81,12 +81,19 @@ class MandelbulberOracle : public ::testing::Test {
 };
 
 TEST_F(MandelbulberOracle, ExampleSilhouettesAgree) {
-  for (const char* f : {"examples/orbittrap005.fract"}) {
+  // A Menger sponge, a Mandelbox and a boolean scene (a Menger sponge minus a Mandelbox) of Mandelbulber's examples.
+  for (const char* f : {"examples/orbittrap005.fract", "examples/mandelbox003.fract", "examples/boolean002.fract"}) {
     std::string path = std::string("/usr/share/mandelbulber2/") + f;
     double a = agreement(mandelbulber_mask(path, dir), sdfc_mask(path, "", dir));
     EXPECT_GE(a, 0.97) << f;
     std::printf("%s: masks agree on %.2f %% of the pixels\n", f, 100 * a);
   }
+}
+
+TEST_F(MandelbulberOracle, QuaternionJuliaSilhouetteAgrees) {
+  std::string path = dir.write("q.fract", "# Mandelbulber settings file\n# version 2.20\n# only modified parameters\n[main_parameters]\nformula_1 5;\n"
+                                          "julia_mode true;\njulia_c -0,2 0,6 0,2;\nfov 0,5;\nN 12;\n[fractal_1]\n");
+  EXPECT_GE(agreement(mandelbulber_mask(path, dir), sdfc_mask(path, "", dir)), 0.97);
 }
 
 TEST_F(MandelbulberOracle, FovOfA220FileIsTheImageHeightAtDistanceOne) {

@@ -29,7 +29,7 @@ double cell(const Table& t, size_t row, int col) {
 
 }  // namespace
 
-std::string import_camera_path(const File& file, const Params& main, Warnings& w) {
+std::string import_camera_path(const File& file, const Params& main, ImportContext& w) {
   const Table& t = file.keyframes.present && !file.keyframes.rows.empty() ? file.keyframes : file.frames;
   if (t.rows.empty()) return {};
   const char* section = &t == &file.keyframes ? "keyframes" : "frames";
@@ -72,7 +72,7 @@ std::string import_camera_path(const File& file, const Params& main, Warnings& w
       if (has_tgt) q[size_t(k)] = cell(t, r, tgt[k]);
     }
     if (p == q) fail(t.row_locs[r], "camera and target are the same point in this frame");
-    o += "      - {time: " + num(time) + ", position: " + vec(p) + ", target: " + vec(q) + "}\n";
+    o += "      - {time: " + num(time) + ", position: " + vec(w.world(p)) + ", target: " + vec(w.world(q)) + "}\n";
   }
   return o;
 }

@@ -99,9 +99,9 @@ Node quaternion(const FormulaInput& in) {
 }
 
 constexpr Formula kMapped[] = {
-    {5, "Quaternion", 10, quaternion},
-    {7, "Menger sponge", 10, menger_sponge},
-    {8, "Mandelbox", 100, mandelbox},
+    {5, "Quaternion", 10, quaternion, true},  // y -> -y commutes with squaring: J(c) mirrored is J(mirrored c)
+    {7, "Menger sponge", 10, menger_sponge, true},
+    {8, "Mandelbox", 100, mandelbox, true},
 };
 
 }  // namespace
@@ -112,7 +112,7 @@ const Formula* find_formula(int id) {
   // Known but not mapped: a row without a writer, kept per id.
   static std::vector<Formula> unmapped = [] {
     std::vector<Formula> v;
-    for (const NameRow& r : kNames) v.push_back({r.id, r.name, 10, nullptr});
+    for (const NameRow& r : kNames) v.push_back({r.id, r.name, 10, nullptr, false});
     return v;
   }();
   for (const Formula& f : unmapped)

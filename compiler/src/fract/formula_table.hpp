@@ -34,6 +34,7 @@ struct Formula {
   const char* name;
   double default_bailout;  // used when use_default_bailout is on
   FormulaWriter write;     // nullptr: not supported yet
+  bool mirror_symmetric;   // the shape is its own mirror image in y -> -y (legacy_coordinate_system needs that)
 };
 
 // The row for `id`, or nullptr when Mandelbulber 2.20 has no such formula.

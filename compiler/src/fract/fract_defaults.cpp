@@ -26,7 +26,7 @@ constexpr Row kMain[] = {
     // the orbit
     {"julia_mode", "0"}, {"julia_c", "0 0 0"}, {"N", "250"}, {"bailout", "100"}, {"use_default_bailout", "1"},
     {"fractal_constant_factor", "1 1 1"}, {"fractal_rotation", "0 0 0"}, {"repeat", "0 0 0"},
-    {"interior_mode", "0"}, {"iteration_threshold_mode", "0"}, {"limits_enabled", "0"},
+    {"interior_mode", "0"}, {"iteration_threshold_mode", "0"}, {"limits_enabled", "0"}, {"limit_min", "-10 -10 -10"}, {"limit_max", "10 10 10"},
     {"constant_DE_threshold", "0"}, {"delta_DE_function", "0"}, {"smoothness", "1"},
     // camera and image
     {"camera", "3 -6 2"}, {"target", "0 0 0"}, {"camera_top", "-0.1277753 0.2555506 0.958314"}, {"fov", "1"},

@@ -11,7 +11,8 @@ Imported import_scene(const File& file) {
   if (file.version > 0 && file.version < 2.0)
     fail(file.version_loc, "files of Mandelbulber 1.x cannot be imported", "open it in Mandelbulber 2 and save it again");
   Params main(file.main, false);
-  Warnings w;
+  ImportContext w;
+  w.mirror_y = main.boolean("legacy_coordinate_system");
   Node geometry = import_geometry(file, main, w);
   geometry.modifiers.push_back({"material", "surface", "mat1_*"});
   std::string o = fmt::format("# Imported from a Mandelbulber {} settings file by `sdfc import`.\n"

@@ -25,7 +25,7 @@ Vec3 main_light_towards(const Params& main) {
   return w;
 }
 
-std::string lights(const Params& main, Warnings& w) {
+std::string lights(const Params& main, ImportContext& w) {
   std::string o = "lights:\n";
   bool any = false;
   if (main.boolean("main_light_enable")) {
@@ -38,7 +38,7 @@ std::string lights(const Params& main, Warnings& w) {
       if (cone > 0) softness = std::clamp(1.0 / std::tan(std::min(cone, 60.0) * M_PI / 180), 1.0, 1e4);
     }
     o += commented("  - directional:", "the main light");
-    o += commented("      direction: " + vec(Vec3{-t[0], -t[1], -t[2]}), "main_light_alpha, main_light_beta");
+    o += commented("      direction: " + vec(w.world(Vec3{-t[0], -t[1], -t[2]})), "main_light_alpha, main_light_beta");
     o += commented("      color: " + colour_of(main, "main_light_colour"), "main_light_colour");
     o += commented("      intensity: " + num(std::max(0.0, main.number("main_light_intensity"))), "main_light_intensity");
     o += commented("      shadows: " + shadows, "shadows_enabled");
@@ -48,7 +48,7 @@ std::string lights(const Params& main, Warnings& w) {
   for (int n = 1; n <= 4; ++n) {
     if (!main.boolean(fmt::format("aux_light_enabled_{}", n))) continue;
     o += commented("  - point:", fmt::format("aux light {}", n));
-    o += commented("      position: " + vec(main.vec3(fmt::format("aux_light_position_{}", n))), fmt::format("aux_light_position_{}", n));
+    o += commented("      position: " + vec(w.world(main.vec3(fmt::format("aux_light_position_{}", n)))), fmt::format("aux_light_position_{}", n));
     o += commented("      color: " + colour_of(main, fmt::format("aux_light_colour_{}", n)), fmt::format("aux_light_colour_{}", n));
     o += commented("      intensity: " + num(std::max(0.0, main.number(fmt::format("aux_light_intensity_{}", n)))),
                    fmt::format("aux_light_intensity_{} (falls off with 1/distance², as Mandelbulber's)", n));
@@ -62,7 +62,7 @@ std::string lights(const Params& main, Warnings& w) {
   return o;
 }
 
-std::string material(const Params& main, Warnings& w) {
+std::string material(const Params& main, ImportContext& w) {
   std::string o = "materials:\n  surface:\n";
   o += commented("    color: " + colour_of(main, "mat1_surface_color"), "mat1_surface_color");
   o += commented("    specular: " + num(std::clamp(main.number("mat1_specular") / 10, 0.0, 1.0)), "mat1_specular / 10");
@@ -103,7 +103,7 @@ std::string material(const Params& main, Warnings& w) {
   return o;
 }
 
-std::string effects(const Params& main, Warnings& w) {
+std::string effects(const Params& main, ImportContext& w) {
   std::string o;
   if (main.boolean("ambient_occlusion_enabled")) {
     int quality = std::clamp(main.integer("ambient_occlusion_quality"), 1, 64);
@@ -139,7 +139,7 @@ std::string effects(const Params& main, Warnings& w) {
 
 }  // namespace
 
-std::string import_look(const File&, const Params& main, Warnings& w) {
+std::string import_look(const File&, const Params& main, ImportContext& w) {
   std::string o = "background:\n";
   o += commented("  top: " + colour_of(main, "background_color_1"), "background_color_1");
   o += commented("  bottom: " + colour_of(main, "background_color_3"), "background_color_3");

@@ -33,15 +33,17 @@ double vertical_fov_degrees(const Params& main, double version) {
   return deg;
 }
 
-CameraFrame camera_frame(const Params& main) {
+CameraFrame camera_frame(const Params& main) { return frame_of(main.vec3("camera"), main.vec3("target"), main.vec3("camera_top"), main); }
+
+CameraFrame frame_of(const Vec3& position, const Vec3& target, const Vec3& top, const Params& main) {
   CameraFrame c;
-  c.position = main.vec3("camera");
-  c.target = main.vec3("target");
+  c.position = position;
+  c.target = target;
   Vec3 f = sub(c.target, c.position);
   double d = length(f);
   if (!(d > 0)) fail(main.loc("target"), "camera and target are the same point");
   c.forward = scaled(f, 1 / d);
-  c.right = cross(c.forward, main.vec3("camera_top"));
+  c.right = cross(c.forward, top);
   double r = length(c.right);
   if (!(r > 1e-9)) fail(main.loc("camera_top"), "camera_top is parallel to the view direction");
   c.right = scaled(c.right, 1 / r);
@@ -50,7 +52,7 @@ CameraFrame camera_frame(const Params& main) {
   return c;
 }
 
-std::string import_view(const File& file, const Params& main, const std::string& path, Warnings& w) {
+std::string import_view(const File& file, const Params& main, const std::string& path, ImportContext& w) {
   int type = main.integer("perspective_type");
   if (type != 0)
     fail(main.loc("perspective_type"), fmt::format("perspective_type {} (fish eye or equirectangular) is not supported "
@@ -61,7 +63,11 @@ std::string import_view(const File& file, const Params& main, const std::string&
   if (width < 1 || width > 16384) fail(main.loc("image_width"), "image_width must be 1 ... 16384");
   if (height < 1 || height > 16384) fail(main.loc("image_height"), "image_height must be 1 ... 16384");
   double fov = vertical_fov_degrees(main, file.version);
-  CameraFrame c = camera_frame(main);
+  // In the legacy coordinate system the reflected scene is seen with up
+  // reversed (see ImportContext).
+  Vec3 top = w.world(main.vec3("camera_top"));
+  if (w.mirror_y) top = {-top[0], -top[1], -top[2]};
+  CameraFrame c = frame_of(w.world(main.vec3("camera")), w.world(main.vec3("target")), top, main);
   // Mandelbulber's pixel (i, j) looks through its top-left corner: half a
   // pixel left of and above sdfc's centre.
   double pixel = 2 * std::tan(fov * M_PI / 360.0) / height * c.distance;
@@ -75,7 +81,7 @@ std::string import_view(const File& file, const Params& main, const std::string&
   } else {
     o += path;
   }
-  o += commented("  up: " + vec(main.vec3("camera_top")), "camera_top");
+  o += commented("  up: " + vec(top), w.mirror_y ? "camera_top, mirrored: legacy_coordinate_system" : "camera_top");
   o += commented("  fov: " + num(fov), file.version < 2.21 ? fmt::format("fov {} (image height at distance 1)", num(main.number("fov")))
                                                            : std::string("fov (degrees)"));
   o += "render:\n";
