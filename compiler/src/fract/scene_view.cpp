@@ -76,8 +76,10 @@ std::string import_view(const File& file, const Params& main, const std::string&
 
   std::string o = "camera:\n";
   if (path.empty()) {
-    o += commented("  position: " + vec(c.position), "camera");
-    o += commented("  target: " + vec(target), "target, half a pixel up and left: Mandelbulber samples pixel corners");
+    const char* mirrored = w.mirror_y ? ", mirrored in y (legacy_coordinate_system)" : "";
+    o += commented("  position: " + vec(c.position), std::string("camera") + mirrored);
+    o += commented("  target: " + vec(target),
+                   std::string("target") + mirrored + ", half a pixel up and left: Mandelbulber samples pixel corners");
   } else {
     o += path;
   }
