@@ -114,6 +114,17 @@ TEST_F(MandelbulberOracle, HalfPixelCornerShiftMatchesBetterThanCentres) {
   EXPECT_GT(shifted, centred) << "shifted " << shifted << ", centred " << centred;
 }
 
+// Mandelbulber's legacy coordinate system mirrors the picture top to bottom.
+TEST_F(MandelbulberOracle, LegacyCoordinateSystemIsMirrored) {
+  std::string legacy = dir.write("legacy.fract", menger_file("legacy_coordinate_system true;\n", "0,5"));
+  std::string plain = dir.write("plain.fract", menger_file("", "0,5"));
+  std::vector<bool> mb = mandelbulber_mask(legacy, dir);
+  double mirrored = agreement(mb, sdfc_mask(legacy, "", dir));
+  double unmirrored = agreement(mb, sdfc_mask(plain, "", dir));
+  EXPECT_GE(mirrored, 0.97);
+  EXPECT_GT(mirrored, unmirrored + 0.02) << "mirrored " << mirrored << ", unmirrored " << unmirrored;
+}
+
 TEST_F(MandelbulberOracle, DetailLevelIsTheHitEpsilon) {
   std::string path = dir.write("detail.fract", menger_file("detail_level 4;\n"));
   std::vector<bool> mb = mandelbulber_mask(path, dir);
