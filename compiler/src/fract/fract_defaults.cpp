@@ -29,7 +29,7 @@ constexpr Row kMain[] = {
     {"interior_mode", "0"}, {"iteration_threshold_mode", "0"}, {"limits_enabled", "0"}, {"limit_min", "-10 -10 -10"}, {"limit_max", "10 10 10"},
     {"constant_DE_threshold", "0"}, {"delta_DE_function", "0"}, {"smoothness", "1"},
     // camera and image
-    {"camera", "3 -6 2"}, {"target", "0 0 0"}, {"camera_top", "-0.1277753 0.2555506 0.958314"}, {"fov", "1"},
+    {"camera", "3 -6 2"}, {"target", "0 0 0"}, {"camera_rotation", "26.565 -16.60154 0"}, {"camera_top", "-0.1277753 0.2555506 0.958314"}, {"fov", "1"},
     {"perspective_type", "0"}, {"image_width", "800"}, {"image_height", "600"}, {"detail_level", "1"},
     {"DE_factor", "1"}, {"view_distance_max", "50"}, {"legacy_coordinate_system", "0"}, {"stereo_enabled", "0"},
     {"DOF_enabled", "0"}, {"gamma", "1"}, {"brightness", "1"}, {"contrast", "1"}, {"hdr", "0"},

@@ -86,7 +86,9 @@ std::string material(const Params& main, ImportContext& w) {
     }
     double speed = main.number("mat1_coloring_speed");
     if (speed > 0) o += commented("      cycles: " + num(std::min(speed, 1000.0)), "mat1_coloring_speed");
-    o += commented("      offset: " + num(main.number("mat1_coloring_palette_offset")), "mat1_coloring_palette_offset");
+    double offset = main.number("mat1_coloring_palette_offset");
+    offset -= std::floor(offset);  // the gradient repeats: only the fraction moves it
+    o += commented("      offset: " + num(offset), "mat1_coloring_palette_offset (its fraction)");
     o += "      repeat: repeat\n      mix: 1\n";
   }
   for (const char* group : {"mat1_use_color_texture", "mat1_use_diffusion_texture", "mat1_use_displacement_texture",

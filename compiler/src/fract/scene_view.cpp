@@ -33,7 +33,19 @@ double vertical_fov_degrees(const Params& main, double version) {
   return deg;
 }
 
-CameraFrame camera_frame(const Params& main) { return frame_of(main.vec3("camera"), main.vec3("target"), main.vec3("camera_top"), main); }
+// The target, or where camera_rotation looks when the file's target sits on
+// the camera (camera_distance_to_target ~ 1e-10 in some files): yaw about z,
+// then pitch about x, of the camera's forward axis +y.
+Vec3 view_target(const Params& main) {
+  Vec3 p = main.vec3("camera"), t = main.vec3("target");
+  if (length(sub(t, p)) > 1e-6 * std::max(1.0, length(p))) return t;
+  Vec3 r = main.vec3("camera_rotation");
+  double yaw = r[0] * M_PI / 180, pitch = r[1] * M_PI / 180;
+  Vec3 f = {-std::sin(yaw) * std::cos(pitch), std::cos(yaw) * std::cos(pitch), std::sin(pitch)};
+  return {p[0] + f[0], p[1] + f[1], p[2] + f[2]};
+}
+
+CameraFrame camera_frame(const Params& main) { return frame_of(main.vec3("camera"), view_target(main), main.vec3("camera_top"), main); }
 
 CameraFrame frame_of(const Vec3& position, const Vec3& target, const Vec3& top, const Params& main) {
   CameraFrame c;
@@ -67,7 +79,7 @@ std::string import_view(const File& file, const Params& main, const std::string&
   // reversed (see ImportContext).
   Vec3 top = w.world(main.vec3("camera_top"));
   if (w.mirror_y) top = {-top[0], -top[1], -top[2]};
-  CameraFrame c = frame_of(w.world(main.vec3("camera")), w.world(main.vec3("target")), top, main);
+  CameraFrame c = frame_of(w.world(main.vec3("camera")), w.world(view_target(main)), top, main);
   // Mandelbulber's pixel (i, j) looks through its top-left corner: half a
   // pixel left of and above sdfc's centre.
   double pixel = 2 * std::tan(fov * M_PI / 360.0) / height * c.distance;
