@@ -7,6 +7,7 @@
 #include "cli_support.hpp"
 #include "commands.hpp"
 #include "sdfc/fract/import.hpp"
+#include "sdfrt/output_file.hpp"
 
 namespace sdfc::cli {
 namespace {
@@ -30,7 +31,7 @@ Action add_import(CLI::App& app) {
       "import", "Turn a Mandelbulber settings file (.fract) into an sdfc scene (render, view and check also take "
                 ".fract files directly)");
   auto a = std::make_shared<ImportArgs>();
-  cmd->add_option("file", a->path, "The .fract file")->required();
+  cmd->add_option("file", a->path, "The .fract file")->required()->each([](const std::string& p) { sdfrt::protect_input(p); });
   cmd->add_option("-o,--output", a->output, "Write the scene to FILE (through a temporary file and a rename) "
                                             "instead of stdout");
   return [a] { return run_import(*a); };

@@ -141,6 +141,9 @@ TEST(FractCommands, ImportCheckAndRenderWithSet) {
   test::RunResult bad = run_sdfc("check " + dir.write("bad.fract", fract("2.20", "formula_1 10;\n")));
   EXPECT_EQ(bad.code, 1);
   EXPECT_TRUE(has(bad.err, "bad.fract:5:11: error: formula 'Kaleidoscopic IFS' (id 10) is not supported yet")) << bad.err;
+  // The input is never the output.
+  EXPECT_NE(run_sdfc("import " + src + " -o " + src).code, 0);
+  EXPECT_TRUE(has(test::read_text(src), "formula_1 7;"));
   test::RunResult img = run_sdfc("render " + src + " -o " + dir.file("m.png") + " --set render.width=16");
   EXPECT_EQ(img.code, 0) << img.err;
 }
