@@ -4,6 +4,7 @@
 // Other animated columns are reported, not imported.
 #include <fmt/format.h>
 
+#include <cmath>
 #include <set>
 
 #include "import_parts.hpp"
@@ -71,7 +72,14 @@ std::string import_camera_path(const File& file, const Params& main, ImportConte
       if (has_cam) p[size_t(k)] = cell(t, r, cam[k]);
       if (has_tgt) q[size_t(k)] = cell(t, r, tgt[k]);
     }
-    if (p == q) fail(t.row_locs[r], "camera and target are the same point in this frame");
+    Vec3 d = {q[0] - p[0], q[1] - p[1], q[2] - p[2]};
+    if (std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) < 1e-6) {
+      // The target sits on the camera (Mandelbulber then steers by rotation
+      // columns): look the still camera's way.
+      Vec3 still_dir = view_target(main);
+      for (size_t k = 0; k < 3; ++k) q[k] = p[k] + still_dir[k] - cam_still[k];
+      w.add(fmt::format("[{}]: a frame's target sits on its camera; it looks the still camera's way", section));
+    }
     o += "      - {time: " + num(time) + ", position: " + vec(w.world(p)) + ", target: " + vec(w.world(q)) + "}\n";
   }
   return o;

@@ -35,6 +35,7 @@ struct CameraFrame {
   double distance;
 };
 CameraFrame camera_frame(const Params& main);  // as the file gives it
+Vec3 view_target(const Params& main);          // target, or where camera_rotation looks
 CameraFrame frame_of(const Vec3& position, const Vec3& target, const Vec3& top, const Params& main);
 double vertical_fov_degrees(const Params& main, double version);
 
