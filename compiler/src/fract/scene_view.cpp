@@ -103,7 +103,12 @@ std::string import_view(const File& file, const Params& main, const std::string&
   o += commented("  height: " + std::to_string(height), "image_height");
   double detail = main.number("detail_level");
   if (!(detail > 0)) fail(main.loc("detail_level"), "detail_level must be positive");
-  o += commented("  hit_epsilon: " + num(1.0 / detail), "1 / detail_level (pixels)");
+  double eps = 1.0 / detail;
+  if (eps > 1000 || eps < 1e-6) {
+    eps = std::clamp(eps, 1e-6, 1000.0);
+    w.add(fmt::format("detail_level {}: sdfc's hit_epsilon is 1e-6 ... 1000 pixels; {} is used", num(detail), num(eps)));
+  }
+  o += commented("  hit_epsilon: " + num(eps), "1 / detail_level (pixels)");
   double de = main.number("DE_factor");
   if (!(de > 0)) fail(main.loc("DE_factor"), "DE_factor must be positive");
   if (de > 2) w.add(fmt::format("DE_factor {}: sdfc's step_factor is at most 2; 2 is used", num(de)));
