@@ -22,7 +22,7 @@
 namespace sdfc::cli {
 
 void SceneArgs::add_to(CLI::App& cmd) {
-  cmd.add_option("scene", path, "Scene file (YAML)")->required()->each([](const std::string& p) { sdfrt::protect_input(p); });
+  cmd.add_option("scene", path, "Scene file (YAML, or a Mandelbulber .fract)")->required()->each([](const std::string& p) { sdfrt::protect_input(p); });
   cmd.add_option("--set", sets, "Override a scene value by its path, e.g. --set render.width=640 "
                                 "--set scene.union.0.mandelbulb.power=7 (repeatable)");
   cmd.add_flag_callback("--allow-slow", [] { scene_caps().allow_slow = true; },

@@ -20,5 +20,6 @@ Action add_merge(CLI::App& app);  // cmd_merge.cpp: a still's region files into 
 Action add_farm(CLI::App& app);   // cmd_farm.cpp: Slurm job scripts
 Action add_mesh(CLI::App& app);
 Action add_kinds(CLI::App& app);  // cmd_kinds.cpp: the node kinds (hidden; for the docs)
+Action add_import(CLI::App& app);  // cmd_import.cpp: Mandelbulber .fract to YAML
 
 }  // namespace sdfc::cli

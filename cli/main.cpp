@@ -42,6 +42,7 @@ int main(int argc, char** argv) {
   reg(add_farm);
   reg(add_mesh);
   reg(add_kinds);
+  reg(add_import);
 
   try {
     app.parse(argc, argv);

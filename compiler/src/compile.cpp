@@ -3,8 +3,10 @@
 #include <fmt/format.h>
 
 #include <chrono>
+#include <iostream>
 #include <vector>
 
+#include "sdfc/fract/import.hpp"
 #include "sdfc/frontend/lower_scene.hpp"
 #include "sdfc/scene_caps.hpp"
 #include "sdfc/source/overrides.hpp"
@@ -47,7 +49,16 @@ double ms_since(std::chrono::steady_clock::time_point t0) {
 }  // namespace
 
 SourceValue load_scene_source(const std::string& path, const std::vector<std::string>& overrides) {
-  SourceValue doc = load_yaml_file(path);
+  // A Mandelbulber settings file is imported first (sdfc import shows the
+  // scene it makes, with the line numbers its errors then refer to).
+  SourceValue doc;
+  if (fract::is_fract_path(path)) {
+    fract::Imported im = fract::import_file(path);
+    for (const std::string& w : im.warnings) std::cerr << printable(path) << ": warning: " << printable(w) << "\n";
+    doc = load_yaml_text(im.yaml, path + " (imported)");
+  } else {
+    doc = load_yaml_file(path);
+  }
   apply_overrides(doc, overrides);
   return doc;
 }

@@ -1,0 +1,139 @@
+// The geometry of an imported scene: which formula slots are in use, each
+// one's node through the formula table, and how they combine — one formula,
+// Mandelbulber's boolean mode (each slot its own object, combined left to
+// right with AND / OR / SUB, placed by formula_position_N and
+// formula_scale_N) or a hybrid (one orbit through several formulas).
+#include <fmt/format.h>
+
+#include "formula_table.hpp"
+#include "import_parts.hpp"
+
+namespace sdfc::fract {
+namespace {
+
+struct Slot {
+  int n;    // 1 ... 9
+  int id;
+  SourceLoc loc;
+};
+
+// Mandelbulber's formula slots in use: formula_N != 0 and fractal_enable_N
+// (which only boolean mode reads); an absent formula_1 is its default, 2.
+std::vector<Slot> used_slots(const Params& main, bool boolean_mode) {
+  std::vector<Slot> out;
+  for (int n = 1; n <= kFractalSlots; ++n) {
+    std::string key = fmt::format("formula_{}", n);
+    int id = main.integer(key);
+    if (id == 0) continue;
+    if (boolean_mode && !main.boolean(fmt::format("fractal_enable_{}", n))) continue;
+    out.push_back({n, id, main.loc(key)});
+  }
+  return out;
+}
+
+// Shape-changing settings sdfc has no node for yet: an error, never a
+// silently different shape.
+void refuse_unmapped_shape_keys(const Params& main) {
+  auto refuse = [&](const std::string& key, const std::string& what) {
+    fail(main.loc(key), fmt::format("{} is not supported yet ({} = {})", what, key, printable(main.section().entries.at(key).value, 80)));
+  };
+  auto vec_set = [&](const char* key) { return main.given(key) && main.vec3(key) != Vec3{0, 0, 0}; };
+  if (vec_set("fractal_rotation")) refuse("fractal_rotation", "rotating the fractal");
+  if (vec_set("repeat")) refuse("repeat", "repeating the fractal");
+  if (main.given("interior_mode") && main.boolean("interior_mode")) refuse("interior_mode", "the interior mode");
+  if (main.given("iteration_threshold_mode") && main.boolean("iteration_threshold_mode"))
+    refuse("iteration_threshold_mode", "the iteration threshold mode");
+  for (const auto& [key, e] : main.section().entries)
+    if (key.rfind("primitive_", 0) == 0 && key.size() > 8 && key.compare(key.size() - 8, 8, "_enabled") == 0 &&
+        (e.value == "true" || e.value == "1"))
+      fail(e.loc, fmt::format("Mandelbulber primitives are not supported yet ({})", key));
+}
+
+Node formula_node(const Slot& s, const File& file, const Params& main, ImportContext& w) {
+  const Formula* f = find_formula(s.id);
+  std::string name = f ? f->name : formula_name(s.id);
+  if (!f || !f->write)
+    fail(s.loc, formula_label(s.id) + " is not supported yet",
+         "sdfc imports the Mandelbox (8), the Menger sponge (7) and the quaternion in julia mode (5)");
+  if (w.mirror_y && !f->mirror_symmetric)
+    fail(main.loc("legacy_coordinate_system"), formula_label(s.id) + " in the legacy coordinate system is not supported yet");
+  Params fractal(file.fractal[size_t(s.n - 1)], true);
+  bool use_default = main.boolean("use_default_bailout");
+  FormulaInput in{fractal,
+                  main,
+                  s.n,
+                  s.id,
+                  name,
+                  s.loc,
+                  main.boolean("julia_mode"),
+                  w.world(main.vec3("julia_c")),
+                  main.integer("N"),
+                  use_default ? f->default_bailout : main.number("bailout"),
+                  &w.lines};
+  return f->write(in);
+}
+
+// limits_enabled keeps the fractal inside the box limit_min ... limit_max:
+// the intersection with that box.
+Node with_limits(Node n, const Params& main, const ImportContext& w) {
+  if (!main.boolean("limits_enabled")) return n;
+  Vec3 lo = main.vec3("limit_min"), hi = main.vec3("limit_max");
+  Vec3 size{}, centre{};
+  for (size_t k = 0; k < 3; ++k) {
+    if (!(hi[k] > lo[k])) fail(main.loc("limit_max"), "limit_max must be above limit_min on every axis");
+    size[k] = hi[k] - lo[k];
+    centre[k] = 0.5 * (hi[k] + lo[k]);
+  }
+  Node box{"box", "limits_enabled", {{"size", vec(size), "limit_max - limit_min"}}, {}, {}};
+  if (w.world(centre) != Vec3{0, 0, 0}) box.modifiers.push_back({"translate", vec(w.world(centre)), "the limits' centre"});
+  return Node{"intersection", "limits_enabled: the fractal inside limit_min ... limit_max", {}, {}, {n, box}};
+}
+
+}  // namespace
+
+Node import_geometry(const File& file, const Params& main, ImportContext& w) {
+  refuse_unmapped_shape_keys(main);
+  bool boolean_mode = main.boolean("boolean_operators");
+  bool hybrid = main.boolean("hybrid_fractal_enable");
+  std::vector<Slot> slots = used_slots(main, boolean_mode);
+  if (slots.empty()) fail(main.section().loc, "no formula is in use (every formula_N is 0 or disabled)");
+  if (!boolean_mode && !hybrid) {  // Mandelbulber then iterates formula_1 alone
+    if (slots[0].n != 1) fail(main.loc("formula_1"), "formula_1 is 0 (none) and neither hybrid nor boolean mode is on");
+    slots.resize(1);
+  }
+  if (!boolean_mode && hybrid && slots.size() > 1) {
+    for (const Slot& s : slots) {  // name the first formula that has no mapping at all
+      const Formula* f = find_formula(s.id);
+      if (!f || !f->write) fail(s.loc, formula_label(s.id) + " is not supported yet (in a hybrid)");
+    }
+    std::string names;
+    for (const Slot& s : slots) names += (names.empty() ? "" : ", ") + formula_label(s.id);
+    fail(slots[0].loc, fmt::format("a hybrid of {} is not supported yet", names),
+         "sdfc's hybrid node mixes Mandelbulb and Mandelbox steps; Mandelbulber's Mandelbulb (id 2) has another shape");
+  }
+  if (!boolean_mode) return with_limits(formula_node(slots[0], file, main, w), main, w);
+
+  Node root;
+  for (const Slot& s : slots) {
+    Node n = formula_node(s, file, main, w);
+    std::string rot = fmt::format("formula_rotation_{}", s.n);
+    if (main.vec3(rot) != Vec3{0, 0, 0}) fail(main.loc(rot), "formula_rotation_N in boolean mode is not supported yet");
+    Vec3 pos = w.world(main.vec3(fmt::format("formula_position_{}", s.n)));
+    double scale = main.number(fmt::format("formula_scale_{}", s.n));
+    if (!(scale > 0)) fail(main.loc(fmt::format("formula_scale_{}", s.n)), "formula_scale_N must be positive");
+    if (scale != 1) n.modifiers.push_back({"scale", num(scale), fmt::format("formula_scale_{}", s.n)});
+    if (pos != Vec3{0, 0, 0}) n.modifiers.push_back({"translate", vec(pos), fmt::format("formula_position_{}", s.n)});
+    if (root.kind.empty()) {
+      root = n;
+      continue;
+    }
+    int op = main.integer(fmt::format("boolean_operator_{}", s.n));
+    const char* kind = op == 0 ? "intersection" : op == 1 ? "union" : op == 2 ? "difference" : nullptr;
+    if (!kind) fail(main.loc(fmt::format("boolean_operator_{}", s.n)), "expected a boolean operator 0 (AND), 1 (OR) or 2 (SUB)");
+    Node combined{kind, fmt::format("boolean_operator_{} {}", s.n, op), {}, {}, {root, n}};
+    root = combined;
+  }
+  return with_limits(root, main, w);
+}
+
+}  // namespace sdfc::fract

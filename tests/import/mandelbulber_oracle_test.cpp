@@ -1,0 +1,136 @@
+// Imported scenes against Mandelbulber's own renders (`mandelbulber2
+// --nogui`, when installed): the hit masks (sdfc's `hit` AOV against
+// Mandelbulber's alpha, its glow, fog and volumetric effects off so that
+// alpha is coverage) must agree on 97 % of the pixels at 160x120, and the
+// camera rules (the fov of 2.20 files, the half-pixel corner shift,
+// detail_level as hit epsilon) must each do better than leaving them out.
+#include <gtest/gtest.h>
+#include <stb_image.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <sdfrt/image_read.hpp>
+
+#include "run_sdfc.hpp"
+
+namespace sdfc::fract {
+namespace {
+
+using test::run_sdfc;
+using test::ScratchDir;
+
+constexpr int W = 160, H = 120;
+const char* kEffectsOff =
+    "glow_enabled=false#basic_fog_enabled=false#volumetric_fog_enabled=false#fake_lights_enabled=false#"
+    "iteration_fog_enable=false#DOF_enabled=false#main_light_volumetric_enabled=false#"
+    "aux_light_volumetric_enabled_1=false#aux_light_volumetric_enabled_2=false#"
+    "aux_light_volumetric_enabled_3=false#aux_light_volumetric_enabled_4=false";
+
+bool have_mandelbulber() { return std::system("command -v mandelbulber2 >/dev/null 2>&1") == 0; }
+
+// Mandelbulber's coverage (alpha > 1/2), row by row from the top.
+std::vector<bool> mandelbulber_mask(const std::string& fract, const ScratchDir& dir) {
+  std::string out = dir.file("mb.png");
+  std::string cmd = "HOME=" + dir.path() + " timeout 300 mandelbulber2 --nogui -r " + std::to_string(W) + "x" +
+                    std::to_string(H) + " -f png16alpha -O '" + kEffectsOff + "' -o '" + out + "' '" + fract +
+                    "' > '" + dir.file("mb.log") + "' 2>&1";
+  EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  int w = 0, h = 0, n = 0;
+  unsigned char* px = stbi_load(out.c_str(), &w, &h, &n, 4);
+  std::vector<bool> mask;
+  if (!px || w != W || h != H) {
+    ADD_FAILURE() << "Mandelbulber wrote no " << W << "x" << H << " image: " << out;
+  } else {
+    for (int i = 0; i < W * H; ++i) mask.push_back(px[4 * i + 3] > 127);
+  }
+  stbi_image_free(px);
+  return mask;
+}
+
+std::vector<bool> sdfc_mask(const std::string& scene, const std::string& sets, const ScratchDir& dir) {
+  std::string out = dir.file("sdfc.png");
+  test::RunResult r = run_sdfc("render '" + scene + "' --width " + std::to_string(W) + " --height " +
+                               std::to_string(H) + " --aov hit -q -o '" + out + "' " + sets);
+  EXPECT_EQ(r.code, 0) << r.err;
+  std::vector<bool> mask;
+  if (r.code != 0) return mask;
+  sdfrt::FloatImage hit = sdfrt::read_pfm(dir.file("sdfc.hit.pfm"), "hit");
+  for (float v : hit.plane(0)) mask.push_back(v > 0.5f);
+  return mask;
+}
+
+double agreement(const std::vector<bool>& a, const std::vector<bool>& b) {
+  if (a.size() != b.size() || a.empty()) return 0;
+  size_t same = 0;
+  for (size_t i = 0; i < a.size(); ++i) same += a[i] == b[i];
+  return double(same) / double(a.size());
+}
+
+// Mandelbulber's default camera (3, -6, 2) looking at the origin, on a Menger sponge.
+std::string menger_file(const std::string& extra, const std::string& fov = "0,3") {
+  return "# Mandelbulber settings file\n# version 2.20\n# only modified parameters\n[main_parameters]\n"
+         "formula_1 7;\nN 12;\nfov " + fov + ";\n" + extra + "[fractal_1]\n[fractal_2]\n";
+}
+
+class MandelbulberOracle : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!have_mandelbulber()) GTEST_SKIP() << "mandelbulber2 is not installed (scripts/bootstrap installs it)";
+  }
+  ScratchDir dir;
+};
+
+TEST_F(MandelbulberOracle, ExampleSilhouettesAgree) {
+  // A Menger sponge, a Mandelbox and a boolean scene (a Menger sponge minus a Mandelbox) of Mandelbulber's examples.
+  for (const char* f : {"examples/orbittrap005.fract", "examples/mandelbox003.fract", "examples/boolean002.fract"}) {
+    std::string path = std::string("/usr/share/mandelbulber2/") + f;
+    double a = agreement(mandelbulber_mask(path, dir), sdfc_mask(path, "", dir));
+    EXPECT_GE(a, 0.97) << f;
+    std::printf("%s: masks agree on %.2f %% of the pixels\n", f, 100 * a);
+  }
+}
+
+TEST_F(MandelbulberOracle, QuaternionJuliaSilhouetteAgrees) {
+  std::string path = dir.write("q.fract", "# Mandelbulber settings file\n# version 2.20\n# only modified parameters\n[main_parameters]\nformula_1 5;\n"
+                                          "julia_mode true;\njulia_c -0,2 0,6 0,2;\nfov 0,5;\nN 12;\n[fractal_1]\n");
+  EXPECT_GE(agreement(mandelbulber_mask(path, dir), sdfc_mask(path, "", dir)), 0.97);
+}
+
+TEST_F(MandelbulberOracle, FovOfA220FileIsTheImageHeightAtDistanceOne) {
+  // fov 1.2: 2 atan(0.6) = 61.9 degrees; read as an angle in radians it would be 68.8.
+  std::string path = dir.write("fov.fract", menger_file("", "1,2"));
+  std::vector<bool> mb = mandelbulber_mask(path, dir);
+  double imported = agreement(mb, sdfc_mask(path, "", dir));
+  double radians = agreement(mb, sdfc_mask(path, "--set camera.fov=68.75493541569878", dir));
+  EXPECT_GE(imported, 0.97);
+  EXPECT_GT(imported, radians + 0.01) << "imported " << imported << ", radians " << radians;
+}
+
+TEST_F(MandelbulberOracle, HalfPixelCornerShiftMatchesBetterThanCentres) {
+  std::string path = dir.write("shift.fract", menger_file(""));
+  std::vector<bool> mb = mandelbulber_mask(path, dir);
+  double shifted = agreement(mb, sdfc_mask(path, "", dir));
+  double centred = agreement(mb, sdfc_mask(path, "--set camera.target=[0,0,0]", dir));
+  EXPECT_GT(shifted, centred) << "shifted " << shifted << ", centred " << centred;
+}
+
+// Mandelbulber's legacy coordinate system mirrors the picture top to bottom.
+TEST_F(MandelbulberOracle, LegacyCoordinateSystemIsMirrored) {
+  std::string legacy = dir.write("legacy.fract", menger_file("legacy_coordinate_system true;\n", "0,5"));
+  std::string plain = dir.write("plain.fract", menger_file("", "0,5"));
+  std::vector<bool> mb = mandelbulber_mask(legacy, dir);
+  double mirrored = agreement(mb, sdfc_mask(legacy, "", dir));
+  double unmirrored = agreement(mb, sdfc_mask(plain, "", dir));
+  EXPECT_GE(mirrored, 0.97);
+  EXPECT_GT(mirrored, unmirrored + 0.02) << "mirrored " << mirrored << ", unmirrored " << unmirrored;
+}
+
+TEST_F(MandelbulberOracle, DetailLevelIsTheHitEpsilon) {
+  std::string path = dir.write("detail.fract", menger_file("detail_level 4;\n"));
+  std::vector<bool> mb = mandelbulber_mask(path, dir);
+  double imported = agreement(mb, sdfc_mask(path, "", dir));
+  EXPECT_GE(imported, 0.97);
+}
+
+}  // namespace
+}  // namespace sdfc::fract
