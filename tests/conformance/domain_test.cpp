@@ -24,7 +24,7 @@ struct DomainScene {
 std::vector<DomainScene> catalogue_scenes() {
   std::vector<DomainScene> v;
   for (const kinds::Description* d : kinds::all())
-    if (d->kind != ir::Kind::Plane)  // unbounded: it would stand in front of the rest of the group
+    if (d->kind != ir::Kind::Plane && ir::info(d->kind).category == ir::Category::Primitive)  // unbounded: it would stand in front of the rest of the group
       v.push_back({std::string(d->yaml), std::string(d->example)});
   v.push_back({"segment", "{segment: {a: [-0.4, 0.1, -0.3], b: [0.3, -0.2, 0.4], radius: 0.15}}"});
   return v;

@@ -22,7 +22,7 @@ struct Case {
 std::vector<Case> cases() {
   std::vector<Case> v;
   for (const kinds::Description* d : kinds::all())
-    if (d->kind != ir::Kind::Plane)  // no surface to sample densely in a box
+    if (d->kind != ir::Kind::Plane && ir::info(d->kind).category == ir::Category::Primitive)  // no surface to sample densely in a box
       v.push_back({std::string(d->yaml), std::string(d->example)});
   v.push_back({"segment", "{segment: {a: [-0.4, 0.1, -0.3], b: [0.3, -0.2, 0.4], radius: 0.15}}"});
   return v;

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "sdfc/formula/emit.hpp"
 #include "sdfc/ir/fractal_math.hpp"
 #include "trap_shape_emitter.hpp"
 
@@ -169,6 +170,8 @@ std::string emit_fractal(const ir::Node& n, const std::string& p, const Literals
     case Kind::Sierpinski: return fmt::format("{}({}, {})", call("de_sierpinski"), p, orbit_args(n, lit));
     case Kind::Kifs: return fmt::format("{}({}, {})", call("de_kifs"), p, orbit_args(n, lit));
     case Kind::Hybrid: return hybrid(n, p, lit, w, used);
+    case Kind::Formula:  // a chain of steps: compiler/src/formula/
+      return formula::emit_chain(formula::chain(size_t(q[0])), p, lit, w, used, formula::Orbit::Distance);
     default: return "";
   }
 }
@@ -225,6 +228,12 @@ std::string emit_fractal_trap(const ir::Node& n, const std::string& p, const Lit
     if (n.kind == Kind::Menger || n.kind == Kind::Sierpinski || n.kind == Kind::Hybrid) return lit.typed(q[0]);
     if (n.kind == Kind::Kifs) return lit.typed(q[5]);
   }
+  if (n.kind == Kind::Formula)
+    return formula::emit_chain(formula::chain(size_t(q[0])), p, lit, w, used,
+                               value == OrbitValue::Escape   ? formula::Orbit::Escape
+                               : value == OrbitValue::Smooth ? formula::Orbit::Smooth
+                                                             : formula::Orbit::Trap,
+                               shape ? trap_measure_call(*shape, "z", used) : "");
   if (n.kind == Kind::Hybrid)
     return hybrid_trap(n, p, lit, w, used, value == OrbitValue::Smooth,
                        shape ? trap_measure_call(*shape, "z", used) : "fmin(fabs(z.x), fmin(fabs(z.y), fabs(z.z)))");

@@ -21,7 +21,8 @@ std::string kind_args(const ir::Node& n, const Literals& lit, bool animated) {
 
 std::optional<std::string> kind_call(const ir::Node& n, const std::string& p, const Literals& lit,
                                      std::set<std::string>& used) {
-  if (!kinds::find(n.kind)) return std::nullopt;
+  const kinds::Description* d = kinds::find(n.kind);
+  if (!d || d->own_code) return std::nullopt;
   std::string args = kind_args(n, lit);
   std::string fn(ir::info(n.kind).stdlib_function);
   used.insert(fn);

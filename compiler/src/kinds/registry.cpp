@@ -60,7 +60,7 @@ void check(const Description& d) {
   if (!d.lower) missing("lower");
   if (!d.props) missing("props");
   if (!d.distance) missing("reference distance");
-  if (k.stdlib_function.empty() || d.call_args.empty()) missing("stdlib call");
+  if (!d.own_code && (k.stdlib_function.empty() || d.call_args.empty())) missing("stdlib call");
   if (d.dual_normals && d.gradient_function.empty()) missing("gradient function (it claims dual normals)");
   if (d.param_count != k.params.size())
     throw std::logic_error(fmt::format("kind '{}': its parameter struct holds {} numbers, its table row names {}",
@@ -77,7 +77,7 @@ struct Registry {
     std::sort(list.begin(), list.end(), [](auto* a, auto* b) { return a->kind < b->kind; });
     for (const Description* d : list) {
       check(*d);
-      args[d->kind] = resolve(*d);
+      args[d->kind] = d->own_code ? std::vector<CallArg>{} : resolve(*d);
     }
   }
 };

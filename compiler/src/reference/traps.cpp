@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "sdfc/formula/evaluate.hpp"
 #include "sdfc/ir/fractal_math.hpp"
 #include "sdfc/reference/evaluator.hpp"
 
@@ -190,6 +191,11 @@ std::optional<OrbitColour> orbit_colour(const ir::Node& n, const Vec3& p, const 
         trap = std::min(trap, min_abs(z));
       }
       return OrbitColour{trap, smooth_iteration(k, len(z), escape, growth, power_law, iterations)};
+    }
+    case Kind::Formula: {  // a chain of steps (compiler/src/formula/)
+      const formula::Chain& c = formula::chain(size_t(q[0]));
+      formula::OrbitResult o = formula::evaluate(c, p, min_abs);
+      return OrbitColour{o.trap, smooth_iteration(int(o.iterations), o.r, c.bailout, 2.0, formula::plan(c).log, c.iterations)};
     }
     default: return std::nullopt;
   }

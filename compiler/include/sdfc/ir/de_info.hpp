@@ -48,6 +48,7 @@ inline double default_step_factor(const Node& n) {
 // "analytic, bound in practice" and the like; empty for non-fractals.
 inline std::string de_summary(const Node& n) {
   if (info(n.kind).category != Category::Fractal) return "";
+  if (n.kind == Kind::Formula) return "";  // sdfc check prints the chain's own account
   int at = de_method_param(n.kind);
   auto method = at < 0 ? DeMethod::Analytic : DeMethod(int(n.params[size_t(at)]));
   std::string what = std::string("de: ") + de_method_name(method);

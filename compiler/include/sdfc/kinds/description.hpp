@@ -8,11 +8,14 @@
 //   SDFC_KIND(Enum, id, "printed name", Category, arity, "param names", "stdlib function")
 #include <array>
 #include <cstring>
+#include <span>
+#include <string>
 #include <string_view>
 #include <type_traits>
 #include <vector>
 
 #include "sdfc/ir/graph.hpp"
+#include "sdfc/kinds/param_doc.hpp"
 
 namespace sdfc::kinds {
 
@@ -60,6 +63,17 @@ struct Description {
   // The stdlib function giving distance and gradient (same arguments, then
   // the gradient's address); empty when there is none.
   std::string_view gradient_function = {};
+  // What the node is, in one line for the docs ("exact", "a bound", ...).
+  std::string_view summary = {};
+  // Its parameters for the docs, in the order a scene usually writes them.
+  std::span<const ParamDoc> docs = {};
+  // Written as code of its own rather than one stdlib call (formula chains,
+  // compiler/src/formula/): the row names no stdlib function, and the
+  // fractal emitter writes it.
+  bool own_code = false;
+  // What `sdfc check` prints under the node (a chain and its estimator);
+  // null: nothing more than its class.
+  std::string (*explain)(const ir::Node&) = nullptr;
 };
 
 }  // namespace sdfc::kinds
