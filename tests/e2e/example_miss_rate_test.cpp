@@ -67,7 +67,12 @@ constexpr int kStride = 12;
 
 std::vector<std::string> fractal_examples() {
   std::vector<std::string> v;
-  for (const auto& p : example_scenes()) {
+  std::vector<std::filesystem::path> scenes = example_scenes();
+  // and the formula chains' examples
+  for (const auto& e : std::filesystem::directory_iterator(std::filesystem::path(SDFC_SOURCE_DIR) / "examples" / "formulas"))
+    if (e.path().extension() == ".yaml") scenes.push_back(e.path());
+  std::sort(scenes.begin(), scenes.end());
+  for (const auto& p : scenes) {
     ir::Module m = build_module(load_yaml_file(p.string()), p.string());
     for (ir::NodeId id : m.graph->postorder(m.root))
       if (ir::info(m.graph->node(id).kind).category == ir::Category::Fractal) {

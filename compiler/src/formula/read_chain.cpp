@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "sdfc/formula/step.hpp"
@@ -56,14 +57,21 @@ class ChainReader {
     const std::string what = fmt::format("formula.iterate[{}].{}", index, def->name);
     if (value && !value->is_null() && !value->is_map()) {
       // the shorthand `scale: 2` sets the step's first number
-      if (def->params.empty() || def->params[0].width != 1) {
+      if (!def->params.empty() && def->params[0].width == 3 && value->is_seq()) {
+        // `scale_xyz: [1, 2, 1]` sets its first vec3
+        const StepParam& q = def->params[0];
+        auto x = r_.vec3(*value, what, Range::closed(q.lo, q.hi));
+        st.a.insert(st.a.end(), x.begin(), x.end());
+        for (size_t i = 1; i < def->params.size(); ++i) fallback(def->params[i], st, value->loc, what);
+      } else if (def->params.empty() || def->params[0].width != 1) {
         error(value->loc, fmt::format("{}: expected a map of the step's settings, got {}", what, value->kind_name()),
               def->params.empty() ? "this step takes no settings: write '- " + std::string(def->name) + "'" : "");
         return;
+      } else {
+        const StepParam& q = def->params[0];
+        st.a.push_back(r_.number(*value, what, Range::closed(q.lo, q.hi)));
+        for (size_t i = 1; i < def->params.size(); ++i) fallback(def->params[i], st, value->loc, what);
       }
-      const StepParam& q = def->params[0];
-      st.a.push_back(r_.number(*value, what, Range::closed(q.lo, q.hi)));
-      for (size_t i = 1; i < def->params.size(); ++i) fallback(def->params[i], st, value->loc, what);
     } else {
       const SourceValue empty;
       const SourceValue& m = value && value->is_map() ? *value : empty;
@@ -91,6 +99,8 @@ class ChainReader {
                           m.find("until") ? m.find("until")->loc : st.loc});
     }
     entry_start_.push_back(out.steps.size());
+    if (def->name == "scale_xyz" && std::min({std::fabs(st.a[0]), std::fabs(st.a[1]), std::fabs(st.a[2])}) < 1e-6)
+      error(value ? value->loc : st.loc, what + ": no factor may be 0", "a zero factor flattens space and the estimate breaks");
     for (int k = 0; k < repeat; ++k) out.steps.push_back(st);
   }
 
@@ -160,6 +170,7 @@ class ChainReader {
       }
     }
     if (!any) error(at, what + ": give at least one of x, y, z (the new components of z)");
+    differentiate(st);
   }
 
   frontend::ValueReader& r_;

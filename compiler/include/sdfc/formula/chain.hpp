@@ -24,6 +24,8 @@ struct Step {
   const StepDef* def = nullptr;
   std::vector<double> a;             // the step's numbers, in its def's order (vec3s as three)
   std::array<expr::ExprPtr, 3> e{};  // expr: the new x, y, z (null keeps the component)
+  // expr: d(new z_i)/dz_j at 3i + j, then d(new z_i)/dc_j at 9 + 3i + j (folded)
+  std::vector<expr::ExprPtr> partials;
   int from = 0;                      // runs on iterations from <= i < until
   int until = kMaxIterations;
   SourceLoc loc;

@@ -77,4 +77,6 @@ void apply_rows(RefState& s, const std::array<double, 9>& m);
 namespace sdfc::formula {
 // An expr step whose partials are all constant (a linear map, no power).
 bool expr_is_linear(const Step& st);
+// Fills an expr step's partials (the reader calls it once).
+void differentiate(Step& st);
 }  // namespace sdfc::formula
