@@ -1,6 +1,5 @@
 // Formula chains rendered on the device: a fractal written only as `expr`
-// steps against the same fractal written with its power step, and the
-// iterations AOV through a chain.
+// steps against the same fractal written with its power step.
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>
@@ -50,19 +49,6 @@ TEST(FormulaImage, ExprBulb2MatchesBulbPower2) {
   // With its own (scalar) derivative the power step's image is recorded, not held.
   sdfrt::FloatImage scalar = render_example("bulb2.yaml", {});
   fmt::print("[formula-image] bulb2_expr vs bulb_power 2 (scalar derivative): {:.3f} % differ\n", 100 * differing(expr, scalar));
-}
-
-// The chain's Mandelbox against the built-in kind on the built-in's view:
-// the same fractal by another road.
-TEST(FormulaImage, MandelboxChainMatchesTheBuiltIn) {
-  sdfrt::FloatImage chain = render_example("mandelbox_chain.yaml", {});
-  const std::string path = (std::filesystem::path(SDFC_SOURCE_DIR) / "examples" / "mandelbox.yaml").string();
-  SourceValue doc = load_yaml_file(path);
-  apply_overrides(doc, {"render.width=320", "render.height=180"});
-  sdfrt::FloatImage builtin = render(build_module(doc, path), 8);
-  double share = differing(chain, builtin);
-  fmt::print("[formula-image] mandelbox_chain vs mandelbox: {:.3f} % of pixels differ by > 4/255\n", 100 * share);
-  EXPECT_LE(share, 0.005);
 }
 
 }  // namespace
