@@ -129,27 +129,16 @@ void octa_ref(RefState& s) {
   reflect_all(s, {-kH, 0, kH}, s.z[2] > s.z[0]);
   reflect_all(s, {0, -kH, kH}, s.z[2] > s.z[1]);
 }
-void octa_emit(const Step&, EmitState& s) {
-  if (s.jacobian) {
-    s.used.insert("formula_octa_fold_j");
-    s.w.line("formula_octa_fold_j(" + jac_args() + ");");
-  } else {
-    s.used.insert("cube_fold");
-    s.w.line("z = cube_fold(z);  // octa_fold");
-  }
+// A symmetry fold: its stdlib function on z, or its _j form on z and the Jacobian.
+void symmetry_fold(EmitState& s, const std::string& jacobian_fn, const std::string& fn) {
+  s.used.insert(s.jacobian ? jacobian_fn : fn);
+  s.w.line(s.jacobian ? jacobian_fn + "(" + jac_args() + ");" : "z = " + fn + "(z);");
 }
+void octa_emit(const Step&, EmitState& s) { symmetry_fold(s, "formula_octa_fold_j", "cube_fold"); }
 void octa_eval(const Step&, RefState& s) { octa_ref(s); }
 
 // ---- tetra_fold: the tetrahedron's symmetry
-void tetra_emit(const Step&, EmitState& s) {
-  if (s.jacobian) {
-    s.used.insert("formula_tetra_fold_j");
-    s.w.line("formula_tetra_fold_j(" + jac_args() + ");");
-  } else {
-    s.used.insert("tetra_fold");
-    s.w.line("z = tetra_fold(z);");
-  }
-}
+void tetra_emit(const Step&, EmitState& s) { symmetry_fold(s, "formula_tetra_fold_j", "tetra_fold"); }
 void tetra_eval(const Step&, RefState& s) {
   reflect_all(s, {kH, kH, 0}, s.z[0] + s.z[1] < 0);
   reflect_all(s, {kH, 0, kH}, s.z[0] + s.z[2] < 0);

@@ -1,16 +1,10 @@
 #pragma once
 // A chain's orbit as straight-line OpenCL C inside the scene function (the
 // steps' numbers are literals), for its distance or one orbit value.
-#include <optional>
 #include <set>
 #include <string>
 
-#include "sdfc/formula/chain.hpp"
-
-namespace sdfc::codegen::detail {
-class CodeWriter;
-class Literals;
-}  // namespace sdfc::codegen::detail
+#include "sdfc/formula/step.hpp"  // the chain, and the emitter's classes declared
 
 namespace sdfc::formula {
 
