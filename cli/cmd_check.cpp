@@ -13,6 +13,7 @@
 #include "sdfc/codegen/camera_view.hpp"
 #include "sdfc/compile.hpp"
 #include "sdfc/ir/printer.hpp"
+#include "sdfc/kinds/registry.hpp"
 
 namespace sdfc::cli {
 
@@ -72,6 +73,7 @@ int run_check(const SceneArgs& args) {
     if (n.kind == ir::Kind::StepFactor) note += fmt::format("  factor {:.3g}", n.params[0]);
     fmt::print("  {:<20} {:<9} L = {:<6.4g} {}{}\n", ir::info(n.kind).name, ir::to_string(n.props.cls), n.props.lipschitz,
                at, note);
+    if (const kinds::Description* d = kinds::find(n.kind); d && d->explain) fmt::print("{}", d->explain(n));
   }
   if (steep > 0)
     fmt::print("  Lipschitz correction: {} of {} nodes with L > 1 divided locally\n", corrected, steep);

@@ -72,6 +72,30 @@ std::vector<Group> groups() {
        // differ from the centre by |grad| 1e-4 while each carries ~1 ulp
        // (~2.4e-7) of rounding, so the gradient has ~1e-3 relative error.
        5e-3},
+      // Formula chains (compiler/src/formula/): the scalar derivative, the
+      // Jacobian (forced by a non-conformal step, an expr or de: jacobian),
+      // julia, windows and repeat_from.
+      {"formula_folds",
+       {{"chain_mandelbox", "formula: {iterations: 12, iterate: [box_fold, sphere_fold, {scale: -1.5}, add_c]}", 2.2},
+        {"chain_nonconformal",
+         "formula: {iterations: 12, iterate: [box_fold, sphere_fold, {scale: -1.5}, {scale_xyz: [1.2, 1.0, 0.8]}, add_c]}", 2.2},
+        {"chain_folds_rotated",
+         "formula: {iterations: 10, julia: [0.6, -0.3, 0.2], iterate: [{abs: {axes: [1, 0, 1]}}, {plane_fold: {normal: [1, 1, 0], offset: 0.2}},"
+         " {box_fold: {limit: 1.2}}, {rotate: {axis: [1, 0, 0], angle: 15}}, sphere_fold, {scale: {scale: 2, offset: [0.1, 0, 0]}}, add_c]}",
+         2.2}},
+       6.0},
+      {"formula_power",
+       {{"chain_bulb8", "formula: {iterations: 8, bailout: 8, iterate: [{bulb_power: 8}, add_c]}", 1.3},
+        {"chain_bulb8_jacobian", "formula: {iterations: 8, bailout: 8, de: jacobian, iterate: [{bulb_power: 8}, add_c]}", 1.3},
+        {"chain_bulb2_expr",
+         "formula: {iterations: 10, bailout: 8, iterate: [{expr: {x: \"2*z*(x*x - y*y) / sqrt(x*x + y*y + 1e-30)\","
+         " y: \"4*x*y*z / sqrt(x*x + y*y + 1e-30)\", z: \"z*z - x*x - y*y\"}}, add_c]}",
+         1.6},
+        {"chain_hybrid_window",
+         "formula: {iterations: 10, bailout: 8, repeat_from: 1, iterate: [{rotate: {axis: [0, 0, 1], angle: 20}}, {bulb_power: 3},"
+         " add_c, {box_fold: {limit: 1, from: 2, until: 5}}]}",
+         1.6}},
+       4.0},
   };
 }
 

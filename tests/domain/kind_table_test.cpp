@@ -59,7 +59,7 @@ TEST(KindTable, AFractalWithoutAHookFailsNamingIt) {
       }
     }
   }
-  EXPECT_EQ(fractals, 8);  // mandelbulb, its julia form, mandelbox, julia, menger, sierpinski, kifs, hybrid
+  EXPECT_EQ(fractals, 9);  // mandelbulb, its julia form, mandelbox, julia, menger, sierpinski, kifs, hybrid, formula
 }
 
 const ir::Node& find_kind(const ir::Graph& g, ir::NodeId root, ir::Kind k) {

@@ -62,7 +62,7 @@ const Scene kOwnScenes[] = {
 const std::vector<Scene>& scenes() {
   static const std::vector<Scene> v = [] {
     std::vector<Scene> out;
-  for (const kinds::Description* d : kinds::all())
+    for (const kinds::Description* d : kinds::all())
       if (d->kind != ir::Kind::Plane && ir::info(d->kind).category == ir::Category::Primitive)  // unbounded: the rays' box would hold no first surface to find
         out.push_back({std::string(d->yaml), std::string(d->example)});
     out.insert(out.end(), std::begin(kOwnScenes), std::end(kOwnScenes));

@@ -67,7 +67,13 @@ constexpr int kStride = 12;
 
 std::vector<std::string> fractal_examples() {
   std::vector<std::string> v;
-  for (const auto& p : example_scenes()) {
+  std::vector<std::filesystem::path> scenes = example_scenes();
+  // and the formula chains' examples (bulb2_expr's expressions are too slow
+  // in the CPU reference for this test's time; its image is held to
+  // bulb2's instead, tests/e2e/formula_image_test.cpp)
+  for (const char* f : {"mandelbox_chain", "mandelbulb_chain", "mandelbulb_jacobian", "bulb2"})
+    scenes.push_back(std::filesystem::path(SDFC_SOURCE_DIR) / "examples" / "formulas" / (std::string(f) + ".yaml"));
+  for (const auto& p : scenes) {
     ir::Module m = build_module(load_yaml_file(p.string()), p.string());
     for (ir::NodeId id : m.graph->postorder(m.root))
       if (ir::info(m.graph->node(id).kind).category == ir::Category::Fractal) {

@@ -105,6 +105,9 @@ struct Description {
   std::string_view summary = {};
   // Its parameters for the docs, in the order a scene usually writes them.
   std::span<const ParamDoc> docs = {};
+  // What `sdfc check` prints under the node (a formula's chain and its
+  // estimator); null: nothing more than its class.
+  std::string (*explain)(const ir::Node&) = nullptr;
 };
 
 }  // namespace sdfc::kinds

@@ -1,0 +1,82 @@
+#pragma once
+// One step of a formula chain: how it is read, whether its derivative is a
+// scalar factor (conformal) or needs the Jacobian, how it is written in
+// OpenCL and evaluated in double. One definition per step (or small family)
+// in compiler/src/formula/step_*.cpp; step_table.cpp lists them.
+#include <array>
+#include <set>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "sdfc/formula/chain.hpp"
+
+namespace sdfc::codegen::detail {
+class CodeWriter;
+class Literals;
+}  // namespace sdfc::codegen::detail
+
+namespace sdfc::formula {
+
+using V3 = std::array<double, 3>;
+
+// A number the step reads: a scalar or a vec3, with its default (`required`
+// when there is none) and its range.
+struct StepParam {
+  std::string_view name;
+  int width;  // 1 or 3
+  std::array<double, 3> fallback;
+  bool required = false;
+  double lo = -1e6, hi = 1e6;
+};
+
+// The orbit's state in double for the reference: z, the scalar derivative
+// and the Jacobian's columns (dz/dpx, dz/dpy, dz/dpz), and what add_c adds.
+struct RefState {
+  V3 z;
+  double dr = 1;
+  std::array<V3, 3> j{V3{1, 0, 0}, V3{0, 1, 0}, V3{0, 0, 1}};
+  V3 c;
+  bool mandel = true;  // c = p: add_c adds the identity to J and 1 to dr
+  bool jacobian = false;
+};
+
+// Where the emitter keeps the state: z, dr (scalar) or ja/jb/jc (columns),
+// c (the vec3 add_c adds) and `id` (1 when c = p, else 0).
+struct EmitState {
+  codegen::detail::CodeWriter& w;
+  const codegen::detail::Literals& lit;
+  std::set<std::string>& used;
+  bool jacobian;
+  int fresh = 0;  // names temporaries
+  std::string tmp(const char* base) { return base + std::to_string(fresh++); }
+};
+
+struct StepDef {
+  std::string_view name;
+  std::vector<StepParam> params;  // a scalar shorthand (`scale: 2`) sets the first
+  // Conformal: the derivative is a scalar factor (folds, rotations, uniform
+  // scales, powers); otherwise the chain needs the running Jacobian.
+  bool (*conformal)(const Step&);
+  bool power;  // grows like a power of |z|: the log estimator fits
+  void (*emit)(const Step&, EmitState&);
+  void (*eval)(const Step&, RefState&);
+  std::string_view what;  // one line for the docs and `sdfc check`
+};
+
+const std::vector<const StepDef*>& steps();  // every step, by name
+const StepDef* find_step(std::string_view name);
+
+// Shared helpers of the step files.
+bool always_conformal(const Step&);
+// Applies the linear map `m` (row-major) to every Jacobian column.
+void apply_rows(RefState& s, const std::array<double, 9>& m);
+
+}  // namespace sdfc::formula
+
+namespace sdfc::formula {
+// An expr step whose partials are all constant (a linear map, no power).
+bool expr_is_linear(const Step& st);
+// Fills an expr step's partials (the reader calls it once).
+void differentiate(Step& st);
+}  // namespace sdfc::formula

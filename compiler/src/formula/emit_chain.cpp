@@ -1,0 +1,97 @@
+#include "sdfc/formula/emit.hpp"
+
+#include <fmt/format.h>
+
+#include "../codegen/code_writer.hpp"
+#include "sdfc/formula/step.hpp"
+
+namespace sdfc::formula {
+
+using codegen::detail::CodeWriter;
+
+namespace {
+
+// The steps of one iteration; `first`: the index the chain starts at.
+void emit_steps(const Chain& c, EmitState& s, size_t first) {
+  for (size_t k = first; k < c.steps.size(); ++k) {
+    const Step& st = c.steps[k];
+    const bool windowed = st.from > 0 || st.until < c.iterations;
+    if (windowed) s.w.open(fmt::format("if (i >= {} && i < {}) {{  // {} on iterations {} to {}", st.from, st.until,
+                                       st.def->name, st.from, std::min(st.until, c.iterations) - 1));
+    st.def->emit(st, s);
+    if (windowed) s.w.close();
+  }
+}
+
+}  // namespace
+
+std::string emit_chain(const Chain& c, const std::string& p, const codegen::detail::Literals& lit, CodeWriter& w,
+                       std::set<std::string>& used, Orbit what, const std::string& measure) {
+  const Plan pl = plan(c);
+  const bool jac = pl.jacobian && what == Orbit::Distance;
+  const std::string out = fmt::format("fo{}", w.fresh());
+  const std::string bail = lit.real(c.bailout);
+  w.line(fmt::format("real {};  // formula: {}", out, pl.why));
+  w.open("{");
+  w.line(fmt::format("vec3 z = {};", p));
+  w.line(fmt::format("const vec3 c = {};", c.julia ? lit.vec3(c.c) : p));
+  w.line(fmt::format("const real id = {};  // dc/dp", lit.typed(c.julia ? 0 : 1)));
+  if (jac)
+    w.line("vec3 ja = v3(1.0f, 0.0f, 0.0f), jb = v3(0.0f, 1.0f, 0.0f), jc = v3(0.0f, 0.0f, 1.0f);");
+  else
+    w.line("real dr = 1.0f;");
+  if (what != Orbit::Distance) w.line("real trap = 1e10f, n = 0.0f;");
+  w.line("real r = v3_length(z);");
+  w.line(fmt::format("mask alive = r < {};", bail));
+  w.open(fmt::format("for (int i = 0; i < {} && M_ANY(alive); ++i) {{", c.iterations));
+  w.line(jac ? "const vec3 z0 = z, ja0 = ja, jb0 = jb, jc0 = jc;" : "const vec3 z0 = z; const real dr0 = dr;");
+  EmitState s{w, lit, used, jac};
+  if (c.repeat_from > 0) {
+    w.open("if (i == 0) {");
+    emit_steps(c, s, 0);
+    w.close();
+    w.open("else {");
+    emit_steps(c, s, size_t(c.repeat_from));
+    w.close();
+  } else {
+    emit_steps(c, s, 0);
+  }
+  w.line("z = v3_select(z0, z, alive);");
+  if (jac)
+    w.line("ja = v3_select(ja0, ja, alive); jb = v3_select(jb0, jb, alive); jc = v3_select(jc0, jc, alive);");
+  else
+    w.line("dr = SEL(dr0, dr, alive);");
+  if (what != Orbit::Distance) {
+    w.line("n = SEL(n, n + 1.0f, alive);");
+    w.line(fmt::format("trap = SEL(trap, fmin(trap, {}), alive);",
+                       measure.empty() ? "fmin(fabs(z.x), fmin(fabs(z.y), fabs(z.z)))" : measure));
+  }
+  w.line("r = v3_length(z);");
+  w.line(fmt::format("alive = alive & (r < {});", bail));
+  w.close("}");
+  switch (what) {
+    case Orbit::Distance: {
+      std::string norm = jac ? "sqrt(v3_dot(ja, ja) + v3_dot(jb, jb) + v3_dot(jc, jc))" : "fabs(dr)";
+      w.line(fmt::format("real dd = fmax({}, K(1e-30f));", norm));
+      w.line(fmt::format("{} = {};", out, pl.log ? "0.5f * log(fmax(r, K(1e-20f))) * r / dd" : "r / dd"));
+      w.line("// far field: the set lies inside the bailout ball, so beyond twice its radius the distance to");
+      w.line("// the ball is a true bound");
+      w.line(fmt::format("real r0 = v3_length({});", p));
+      w.line(fmt::format("{0} = SEL({0}, r0 - {1}, r0 > {2});", out, bail, lit.real(2 * c.bailout)));
+      break;
+    }
+    case Orbit::Trap: w.line(fmt::format("{} = trap;", out)); break;
+    case Orbit::Escape: w.line(fmt::format("{} = n;", out)); break;
+    case Orbit::Smooth:
+      // the fraction past the bailout, by the growth law the estimator assumes
+      w.line(fmt::format("real rr = fmax(r, {0}), lb = log({0});", bail));
+      w.line(pl.log ? "real frac = clamp(log(log(rr) / lb) / log(K(2.0f)), K(0.0f), K(1.0f));"
+                    : "real frac = clamp(log(rr / " + bail + ") / log(K(2.0f)), K(0.0f), K(1.0f));");
+      w.line(fmt::format("{} = SEL((real)(1.0f), (n - frac) / {}, r >= {});", out, lit.real(double(c.iterations)), bail));
+      break;
+  }
+  w.close("}");
+  return out;
+}
+
+}  // namespace sdfc::formula

@@ -1,0 +1,46 @@
+// The chain's orbit in double, step for step as emit_chain writes it.
+#include <algorithm>
+#include <cmath>
+
+#include "sdfc/formula/evaluate.hpp"
+#include "sdfc/formula/step.hpp"
+
+namespace sdfc::formula {
+
+namespace {
+double length(const V3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+}  // namespace
+
+OrbitResult evaluate(const Chain& c, const std::array<double, 3>& p,
+                     const std::function<double(const std::array<double, 3>&)>& measure) {
+  const Plan pl = plan(c);
+  RefState s;
+  s.z = p;
+  s.c = c.julia ? c.c : p;
+  s.mandel = !c.julia;
+  s.jacobian = pl.jacobian;
+  double trap = 1e10, n = 0;
+  double r = length(s.z);
+  for (int i = 0; i < c.iterations && r < c.bailout; ++i) {
+    for (size_t k = i == 0 ? 0 : size_t(c.repeat_from); k < c.steps.size(); ++k) {
+      const Step& st = c.steps[k];
+      if (i >= st.from && i < st.until) st.def->eval(st, s);
+    }
+    n += 1;
+    trap = std::min(trap, measure ? measure(s.z) : std::min({std::fabs(s.z[0]), std::fabs(s.z[1]), std::fabs(s.z[2])}));
+    r = length(s.z);
+  }
+  double norm = std::fabs(s.dr);
+  if (pl.jacobian) {
+    norm = 0;
+    for (const V3& col : s.j) norm += col[0] * col[0] + col[1] * col[1] + col[2] * col[2];
+    norm = std::sqrt(norm);
+  }
+  norm = std::max(norm, 1e-30);
+  double d = pl.log ? 0.5 * std::log(std::max(r, 1e-20)) * r / norm : r / norm;
+  double r0 = length(p);
+  if (r0 > 2 * c.bailout) d = r0 - c.bailout;
+  return {d, trap, n, r};
+}
+
+}  // namespace sdfc::formula

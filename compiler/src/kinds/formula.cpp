@@ -1,0 +1,94 @@
+// formula: a fractal written as a chain of steps (compiler/src/formula/);
+// the node holds the chain's index in the chain table.
+#include <fmt/format.h>
+
+#include "../codegen/trap_shape_emitter.hpp"
+#include "fractal.hpp"
+#include "sdfc/formula/emit.hpp"
+#include "sdfc/formula/evaluate.hpp"
+#include "sdfc/formula/read_chain.hpp"
+#include "sdfc/reference/evaluator.hpp"
+
+SDFC_KIND(Formula, 55, "formula", Fractal, 0, "chain,iterations,bailout", "")
+
+namespace sdfc::kinds {
+namespace {
+
+struct FormulaP {
+  double chain, iterations, bailout;
+};
+
+ir::NodeId lower(Lowering& l) {
+  std::optional<formula::Chain> c = formula::read_chain(l.reader(), l.body());
+  if (!c) return ir::kNoNode;
+  FormulaP p{double(c->iterations), double(c->iterations), c->bailout};
+  p.chain = double(formula::intern(std::move(*c)));
+  return l.make(p);
+}
+
+ir::Props props(const ir::Node& n) {
+  auto f = view<FormulaP>(n);
+  const formula::Chain& c = formula::chain(size_t(f.chain));
+  ir::Props p;
+  p.known = true;
+  // The set lies inside the bailout ball: an orbit from outside it stops at once.
+  p.bounds = ir::Box3::cube(c.bailout);
+  p.cls = ir::DistanceClass::Estimate;
+  p.lipschitz = 1;
+  const double per_step = formula::plan(c).jacobian ? 40 : 12;
+  p.cost = 20 + double(c.iterations) * (8 + per_step * double(c.steps.size()));
+  return p;
+}
+
+double distance(const ir::Node& n, const V3& p) {
+  return formula::evaluate(formula::chain(size_t(view<FormulaP>(n).chain)), p).distance;
+}
+
+const formula::Chain& chain_of(const ir::Node& n) { return formula::chain(size_t(view<FormulaP>(n).chain)); }
+
+std::string emit(Emitter& e) {
+  return formula::emit_chain(chain_of(e.n), e.p, e.lit, e.w, e.used, formula::Orbit::Distance);
+}
+
+std::string emit_orbit(Emitter& e) {
+  using codegen::detail::OrbitValue;
+  const formula::Orbit what = e.value == OrbitValue::Escape   ? formula::Orbit::Escape
+                              : e.value == OrbitValue::Smooth ? formula::Orbit::Smooth
+                                                              : formula::Orbit::Trap;
+  return formula::emit_chain(chain_of(e.n), e.p, e.lit, e.w, e.used, what,
+                             e.shape ? codegen::detail::trap_measure_call(*e.shape, "z", e.used) : "");
+}
+
+reference::OrbitColour orbit_colour(const ir::Node& n, const V3& p, const ir::TrapShape& shape) {
+  const formula::Chain& c = chain_of(n);
+  formula::OrbitResult o = formula::evaluate(c, p, [&](const V3& z) { return orbit::measure(shape, z); });
+  return {o.trap, orbit::smooth_iteration(int(o.iterations), o.r, c.bailout, 2.0, formula::plan(c).log, c.iterations)};
+}
+
+// sdfc check prints the chain's own account (explain) instead.
+std::string de_summary(const ir::Node&) { return ""; }
+
+std::string explain(const ir::Node& n) { return formula::describe(formula::chain(size_t(view<FormulaP>(n).chain))); }
+
+constexpr ParamDoc k_docs[] = {
+    {"iterate", "list of steps", "", "1 to 64 steps", "the steps applied to z in order, every iteration (see docs/formulas.md)"},
+    {"iterations", "integer", "12", "1 to 1000", "how many times the chain runs"},
+    {"bailout", "number", "100", "1 to 1e6", "the orbit stops once |z| passes it; the fractal lies inside this ball"},
+    {"julia", "vec3", "", "", "the constant add_c adds; without it c is the point (the Mandelbrot form)"},
+    {"de", "one of auto|linear|log|jacobian", "auto", "", "the distance estimate; auto picks from the steps"},
+    {"repeat_from", "integer", "0", "an index into iterate", "iterations after the first start at this step"},
+};
+
+}  // namespace
+
+namespace described {
+extern const Description Formula{
+    .kind = ir::Kind::Formula, .yaml = "formula",
+    .example = "{formula: {iterations: 10, iterate: [box_fold, sphere_fold, {scale: -1.8}, add_c]}}",
+    .param_count = count_of<FormulaP>(), .lower = lower, .props = props, .call_args = "", .distance = distance,
+    .emit = emit, .emit_orbit = emit_orbit, .orbit_colour = orbit_colour, .de_summary = de_summary,
+    .summary = "a fractal written as a chain of steps, its distance estimate derived from them",
+    .docs = k_docs, .explain = explain};
+}
+
+}  // namespace sdfc::kinds

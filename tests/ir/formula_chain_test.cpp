@@ -1,0 +1,108 @@
+// Formula chains on the CPU: the estimator the compiler picks for a chain,
+// repeats and windows, and the chain's double reference against the
+// built-in fractals it spells out (written independently in reference/).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+
+#include "scene_text.hpp"
+#include "sdfc/formula/chain.hpp"
+#include "sdfc/passes/passes.hpp"
+#include "sdfc/reference/evaluator.hpp"
+
+namespace sdfc {
+namespace {
+
+ir::Module module_of(const std::string& node) { return passes::run_pipeline(test::lower_text("scene: " + node + "\n")); }
+
+const ir::Node& formula_node(const ir::Module& m) {
+  for (ir::NodeId k : m.graph->postorder(m.root))
+    if (m.graph->node(k).kind == ir::Kind::Formula) return m.graph->node(k);
+  throw std::runtime_error("no formula node");
+}
+
+const formula::Chain& chain_of(const ir::Module& m) { return formula::chain(size_t(formula_node(m).params[0])); }
+
+formula::Plan plan_of(const std::string& node) { return formula::plan(chain_of(module_of(node))); }
+
+TEST(FormulaPlan, FoldsAndUniformScalesKeepAScalarDerivativeAndTheLinearForm) {
+  formula::Plan p = plan_of("{formula: {iterate: [box_fold, sphere_fold, {scale: 2}, {rotate: {angle: 30}}, add_c]}}");
+  EXPECT_FALSE(p.jacobian);
+  EXPECT_FALSE(p.log);
+}
+
+TEST(FormulaPlan, ANonConformalStepTakesTheJacobianAndIsNamed) {
+  formula::Plan p = plan_of("{formula: {iterate: [box_fold, {scale_xyz: [1, 2, 1]}, add_c]}}");
+  EXPECT_TRUE(p.jacobian);
+  EXPECT_NE(p.why.find("scale_xyz"), std::string::npos) << p.why;
+  // equal factors are a uniform scale
+  EXPECT_FALSE(plan_of("{formula: {iterate: [box_fold, {scale_xyz: [2, -2, 2]}, add_c]}}").jacobian);
+}
+
+TEST(FormulaPlan, APowerStepTakesTheLogForm) {
+  formula::Plan p = plan_of("{formula: {iterate: [{bulb_power: 8}, add_c]}}");
+  EXPECT_TRUE(p.log);
+  EXPECT_FALSE(p.jacobian);
+  EXPECT_NE(p.why.find("bulb_power"), std::string::npos) << p.why;
+}
+
+TEST(FormulaPlan, ExprIsDifferentiatedAndOnlyANonLinearOneIsAPower) {
+  formula::Plan lin = plan_of("{formula: {iterate: [{expr: {x: \"2*x + y\", y: \"2*y\", z: \"2*z - cx\"}}, add_c]}}");
+  EXPECT_TRUE(lin.jacobian);
+  EXPECT_FALSE(lin.log);
+  formula::Plan sq = plan_of("{formula: {iterate: [{expr: {x: \"x*x - y*y\", y: \"2*x*y\"}}, add_c]}}");
+  EXPECT_TRUE(sq.jacobian);
+  EXPECT_TRUE(sq.log);
+}
+
+TEST(FormulaPlan, DeOverridesTheChoice) {
+  EXPECT_TRUE(plan_of("{formula: {de: jacobian, iterate: [{bulb_power: 8}, add_c]}}").jacobian);
+  EXPECT_FALSE(plan_of("{formula: {de: linear, iterate: [{bulb_power: 8}, add_c]}}").log);
+  EXPECT_TRUE(plan_of("{formula: {de: log, iterate: [box_fold, {scale: 2}, add_c]}}").log);
+}
+
+TEST(FormulaChain, RepeatsUnrollAndRepeatFromCountsEntries) {
+  ir::Module m = module_of("{formula: {repeat_from: 1, iterate: [{scale: {scale: 2, repeat: 3}}, box_fold, {add_c: {from: 1, until: 4}}]}}");
+  const formula::Chain& c = chain_of(m);
+  ASSERT_EQ(c.steps.size(), 5u);
+  EXPECT_EQ(c.repeat_from, 3);  // entry 1 (box_fold) is step 3 after the three scales
+  EXPECT_EQ(c.steps[4].from, 1);
+  EXPECT_EQ(c.steps[4].until, 4);
+}
+
+// The chain's reference against the built-in kind's, point by point.
+void expect_same_field(const std::string& chain, const std::string& builtin, double radius, double tol) {
+  ir::Module a = module_of(chain), b = module_of(builtin);
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-radius, radius);
+  int compared = 0;
+  for (int i = 0; i < 4000; ++i) {
+    reference::Vec3 p{u(rng), u(rng), u(rng)};
+    double da = reference::distance(a, p), db = reference::distance(b, p);
+    if (std::fabs(db) > 0.5 * radius) continue;  // far field: the two bound differently there
+    ++compared;
+    ASSERT_NEAR(da, db, tol * std::max(1.0, std::fabs(db))) << chain << " at " << p[0] << ", " << p[1] << ", " << p[2];
+  }
+  EXPECT_GT(compared, 2000);
+}
+
+TEST(FormulaChain, MandelboxChainIsTheMandelbox) {
+  expect_same_field("{formula: {iterations: 12, iterate: [box_fold, sphere_fold, {scale: -1.5}, add_c]}}",
+                    "{mandelbox: {scale: -1.5, iterations: 12}, step_factor: 1}", 2.0, 1e-9);
+}
+
+TEST(FormulaChain, JuliaMandelboxChainIsTheJuliaMandelbox) {
+  expect_same_field("{formula: {iterations: 10, julia: [0.8, -0.4, 0.3], iterate: [box_fold, sphere_fold, {scale: 2}, add_c]}}",
+                    "{mandelbox: {scale: 2, julia: [0.8, -0.4, 0.3], iterations: 10}, step_factor: 1}", 2.0, 1e-9);
+}
+
+TEST(FormulaChain, NonConformalMandelboxChainIsTheJacobianMandelbox) {
+  expect_same_field(
+      "{formula: {iterations: 12, iterate: [box_fold, sphere_fold, {scale: -1.5}, {scale_xyz: [1.2, 1.0, 0.8]}, add_c]}}",
+      "{mandelbox: {scale: -1.5, scale_xyz: [1.2, 1.0, 0.8], iterations: 12, de: jacobian}}", 2.0, 1e-9);
+}
+
+}  // namespace
+}  // namespace sdfc
