@@ -29,12 +29,9 @@ class Lowering {
   ir::NodeId make(const P& params) {
     return make_node(params_of(params));
   }
-  // For bodies that are more than a map of numbers (formula chains).
-  frontend::ValueReader& reader() { return r_; }
-  const SourceValue& body() const { return body_; }
   // Parameters that may be expressions of time, in the order of Node::params.
   ir::NodeId make_animated(const std::vector<frontend::Param>& params);
-  // For lowerings that read more than one map (a fractal's nested steps) or
+  // For lowerings that read more than one map (a fractal's nested steps, a formula's chain) or
   // make a node of a sibling kind (mandelbulb with julia: a Juliabulb).
   frontend::ValueReader& reader() { return r_; }
   ir::Builder& builder() { return b_; }
