@@ -145,7 +145,7 @@ std::string de_summary(const ir::Node&) {
 static constexpr ParamDoc k_docs[] = {
     {"steps", "list of 1 to 4 formulas", "", "",
      "each {mandelbulb: {power}} (2 to 32) or {mandelbox: {scale, min_radius, fixed_radius, folding_limit}}"},
-    {"repeat", "list of whole numbers", "1 each", "1 to 20, one per step", "how many times each step runs in turn"},
+    {"repeat", "list of whole numbers", "[1, 1]", "1 to 20, one per step", "how many times each step runs in turn (1 for each step; the default shown is for two steps)"},
     {"iterations", "integer", "12", "1 to 200", "orbit steps in all"},
     {"bailout", "number", "10", "> 1, up to 1000", "the ball that holds the set"},
     {"de", "one of analytic", "analytic", "", "the distance estimator"},

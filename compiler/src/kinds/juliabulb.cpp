@@ -91,7 +91,7 @@ static constexpr ParamDoc k_docs[] = {
     {"power", "number", "8", "2 to 64, not animated", "the exponent of z -> z^power + julia"},
     {"iterations", "integer", "10", "1 to 1000", "orbit steps: more gives finer detail"},
     {"bailout", "number", "2", "> 0, up to 1000", "the radius past which an orbit has escaped"},
-    {"julia", "vec3", "0, 0, 0", "each -4 to 4", "the fixed c added at every step"},
+    {"julia", "vec3", "", "each -4 to 4", "the fixed c added at every step (without it the node is a Mandelbulb)"},
 };
 
 }  // namespace

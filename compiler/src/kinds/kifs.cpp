@@ -138,7 +138,7 @@ std::string de_summary(const ir::Node&) { return de_words(ir::DeMethod::Analytic
 static constexpr ParamDoc k_docs[] = {
     {"symmetry", "one of tetrahedral|octahedral|icosahedral|menger", "tetrahedral", "", "the fold's symmetry group"},
     {"scale", "number", "2", "> 1, up to 4", "the expansion per step about the offset"},
-    {"offset", "vec3", "1, 1, 1", "each -10 to 10, not zero", "the scaling centre: the attractor lies within |offset|"},
+    {"offset", "vec3", "[1, 1, 1]", "each -10 to 10, not zero", "the scaling centre: the attractor lies within |offset|"},
     {"rotate_before", "map (axis, degrees)", "", "", "a rotation before each fold"},
     {"rotate_after", "map (axis, degrees)", "", "", "a rotation after each scaling"},
     {"iterations", "integer", "12", "1 to 40", "orbit steps: more gives finer detail"},

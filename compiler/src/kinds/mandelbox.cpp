@@ -189,7 +189,7 @@ static constexpr ParamDoc k_docs[] = {
     {"folding_limit", "number", "1", "> 0, up to 100", "where the box fold reflects"},
     {"iterations", "integer", "12", "1 to 200", "orbit steps: more gives finer detail"},
     {"julia", "vec3", "", "each -10 to 10", "a fixed c instead of the point (a Julia Mandelbox)"},
-    {"scale_xyz", "vec3", "1, 1, 1", "each 0.25 to 4; |scale| x the smallest > 1",
+    {"scale_xyz", "vec3", "[1, 1, 1]", "each 0.25 to 4; |scale| x the smallest > 1",
      "a factor of the scale per axis (non-conformal: use de: jacobian)"},
     {"de", "one of analytic|jacobian", "analytic", "", "the distance estimator (jacobian: the full matrix, a true bound)"},
 };

@@ -110,7 +110,7 @@ reference::OrbitColour orbit_colour(const ir::Node& n, const V3& p, const ir::Tr
 std::string de_summary(const ir::Node&) { return de_words(ir::DeMethod::Analytic); }
 
 static constexpr ParamDoc k_docs[] = {
-    {"c", "list of 4 numbers", "-0.2, 0.6, 0.2, 0.2", "each -4 to 4", "the quaternion constant w, x, y, z"},
+    {"c", "list of 4 numbers", "[-0.2, 0.6, 0.2, 0.2]", "each -4 to 4", "the quaternion constant w, x, y, z"},
     {"degree", "integer", "2", "2 to 3", "the power of q -> q^degree + c"},
     {"iterations", "integer", "12", "1 to 1000", "orbit steps: more gives finer detail"},
     {"slice", "number", "0", "-4 to 4", "the k coordinate of the 3D slice through the 4D set"},
