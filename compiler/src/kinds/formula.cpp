@@ -87,6 +87,7 @@ extern const Description Formula{
     .example = "{formula: {iterations: 10, iterate: [box_fold, sphere_fold, {scale: -1.8}, add_c]}}",
     .param_count = count_of<FormulaP>(), .lower = lower, .props = props, .call_args = "", .distance = distance,
     .emit = emit, .emit_orbit = emit_orbit, .orbit_colour = orbit_colour, .de_summary = de_summary,
+    .bounds_trust = 0.5,  // the bailout ball is loose: passes/fractal_bounds searches with the estimate
     .summary = "a fractal written as a chain of steps, its distance estimate derived from them",
     .docs = k_docs, .explain = explain};
 }
