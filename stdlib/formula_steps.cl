@@ -117,3 +117,16 @@ inline void formula_bulb_j(vec3* zp, vec3* ja, vec3* jb, vec3* jc, real power)
     *ja = cols[0]; *jb = cols[1]; *jc = cols[2];
     *zp = v3(rn * st * cp, rn * st * sp, rn * ct);
 }
+
+//! fn formula_inversion_j
+//! deps: vec3_ops
+//! class: helper
+// An inversion's derivative on the Jacobian's columns: c -> f (c - k w (w.c)),
+// with w the point before it, f its factor and k = 2 / |w|^2 (0 where it
+// only scales).
+inline void formula_inversion_j(vec3 w, vec3* ja, vec3* jb, vec3* jc, real f, real k)
+{
+    *ja = v3_scale(v3_mad(*ja, w, -k * v3_dot(w, *ja)), f);
+    *jb = v3_scale(v3_mad(*jb, w, -k * v3_dot(w, *jb)), f);
+    *jc = v3_scale(v3_mad(*jc, w, -k * v3_dot(w, *jc)), f);
+}

@@ -96,6 +96,21 @@ std::vector<Group> groups() {
          " add_c, {box_fold: {limit: 1, from: 2, until: 5}}]}",
          1.6}},
        4.0},
+      // Presets and the steps the Mandelbulber presets need: the pseudo-Kleinian
+      // (its own estimate), Amazing Surf, and the inversions, polyfold and
+      // icosa_fold with the scalar derivative and the Jacobian.
+      {"formula_presets",
+       {{"preset_pseudo_kleinian", "pseudo_kleinian: {iterations: 8}", 1.6},
+        {"preset_amazing_surf", "amazing_surf: {scale: 1.8, rotation_axis: [1, 1, 0], rotation_angle: 30, iterations: 10}", 2.2},
+        {"chain_new_folds",
+         "formula: {iterations: 10, iterate: [{polyfold: {order: 5, until: 2}}, icosa_fold, {surf_fold: {limit: [0.9, 1, 1.1], axes: [1, 1, 1]}},"
+         " {kleinian_fold: {min_r2: 0.4}}, {spherical_invert: {radius: 1.2, centre: [0.1, 0, 0], from: 1, until: 2}}, {scale: -1.8}, add_c]}",
+         2.2},
+        {"chain_new_folds_jacobian",
+         "formula: {iterations: 10, de: jacobian, iterate: [{polyfold: {order: 5, until: 2}}, icosa_fold, {surf_fold: {limit: [0.9, 1, 1.1], axes: [1, 1, 1]}},"
+         " {kleinian_fold: {min_r2: 0.4}}, {spherical_invert: {radius: 1.2, centre: [0.1, 0, 0], from: 1, until: 2}}, {scale: -1.8}, add_c]}",
+         2.2}},
+       6.0},
   };
 }
 

@@ -73,7 +73,11 @@ std::string emit_chain(const Chain& c, const std::string& p, const codegen::deta
     case Orbit::Distance: {
       std::string norm = jac ? "sqrt(v3_dot(ja, ja) + v3_dot(jb, jb) + v3_dot(jc, jc))" : "fabs(dr)";
       w.line(fmt::format("real dd = fmax({}, K(1e-30f));", norm));
-      w.line(fmt::format("{} = {};", out, pl.log ? "0.5f * log(fmax(r, K(1e-20f))) * r / dd" : "r / dd"));
+      if (pl.kleinian)
+        w.line(fmt::format("{{ real rxy = sqrt(z.x * z.x + z.y * z.y); {} = fmax(rxy - {}, fabs(rxy * z.z) / fmax(r, K(1e-20f))) / dd; }}",
+                           out, lit.real(c.kleinian_size)));
+      else
+        w.line(fmt::format("{} = {};", out, pl.log ? "0.5f * log(fmax(r, K(1e-20f))) * r / dd" : "r / dd"));
       w.line("// far field: the set lies inside the bailout ball, so beyond twice its radius the distance to");
       w.line("// the ball is a true bound");
       w.line(fmt::format("real r0 = v3_length({});", p));

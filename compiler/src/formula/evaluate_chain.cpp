@@ -38,6 +38,10 @@ OrbitResult evaluate(const Chain& c, const std::array<double, 3>& p,
   }
   norm = std::max(norm, 1e-30);
   double d = pl.log ? 0.5 * std::log(std::max(r, 1e-20)) * r / norm : r / norm;
+  if (pl.kleinian) {
+    double rxy = std::sqrt(s.z[0] * s.z[0] + s.z[1] * s.z[1]);
+    d = std::max(rxy - c.kleinian_size, std::fabs(rxy * s.z[2]) / std::max(r, 1e-20)) / norm;
+  }
   double r0 = length(p);
   if (r0 > 2 * c.bailout) d = r0 - c.bailout;
   return {d, trap, n, r};

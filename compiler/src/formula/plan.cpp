@@ -29,7 +29,10 @@ Plan plan(const Chain& c) {
     derivative = "scalar derivative: every step is conformal with a known factor";
   }
   std::string form;
-  if (c.de == DeChoice::Linear || c.de == DeChoice::Log) {
+  if (c.de == DeChoice::Kleinian) {
+    p.kleinian = true;
+    form = fmt::format("max(rxy - {}, |rxy z.z| / r) / |dr| (de: kleinian)", c.kleinian_size);
+  } else if (c.de == DeChoice::Linear || c.de == DeChoice::Log) {
     p.log = c.de == DeChoice::Log;
     form = p.log ? "0.5 log(r) r / |dr| (de: log)" : "r / |dr| (de: linear)";
   } else if (power) {
@@ -64,7 +67,8 @@ std::string show_step(const Step& s) {
 }  // namespace
 
 std::string describe(const Chain& c) {
-  std::string out = fmt::format("formula: {} iterations, bailout {}, {}\n", c.iterations, c.bailout,
+  std::string out = c.preset.empty() ? "" : fmt::format("preset {} expands to:\n", c.preset);
+  out += fmt::format("formula: {} iterations, bailout {}, {}\n", c.iterations, c.bailout,
                                 c.julia ? fmt::format("julia c = [{}, {}, {}]", c.c[0], c.c[1], c.c[2]) : "c = the point");
   for (size_t i = 0; i < c.steps.size(); ++i)
     out += fmt::format("  {}{}. {}\n", i, c.repeat_from == int(i) && i ? " (repeat from here)" : "", show_step(c.steps[i]));
@@ -89,7 +93,7 @@ size_t intern(Chain c) {
   std::string key = describe(c);
   for (const Step& s : c.steps)
     for (double v : s.a) key += fmt::format(" {:a}", v);
-  key += fmt::format(" {:a} {} {}", c.bailout, int(c.de), c.repeat_from);
+  key += fmt::format(" {:a} {} {} {:a}", c.bailout, int(c.de), c.repeat_from, c.kleinian_size);
   Table& t = table();
   std::lock_guard<std::mutex> g(t.lock);
   auto it = t.by_text.find(key);

@@ -183,20 +183,31 @@ class ChainReader {
 
 }  // namespace
 
-std::optional<Chain> read_chain(frontend::ValueReader& r, const SourceValue& body) {
-  const bool clean = r.sink().empty();  // the reader's own errors do not tell us
-  ChainReader cr(r);
-  frontend::MapReader m(r, body, "formula", {"iterations", "bailout", "iterate", "julia", "de", "repeat_from"});
-  if (!m.ok()) return std::nullopt;
-  Chain c;
-  c.iterations = m.integer("iterations", 12, 1, kMaxIterations);
-  c.bailout = m.number("bailout", 100, Range::closed(1, 1e6));
+void read_settings(frontend::MapReader& m, Chain& c, int iterations, double bailout) {
+  c.iterations = m.integer("iterations", iterations, 1, kMaxIterations);
+  c.bailout = m.number("bailout", bailout, Range::closed(1, 1e6));
   if (m.get("julia")) {
     c.julia = true;
     c.c = m.vec3("julia", {0, 0, 0});
   }
-  std::string de = m.word("de", "auto", {"auto", "linear", "log", "jacobian"});
-  c.de = de == "linear" ? DeChoice::Linear : de == "log" ? DeChoice::Log : de == "jacobian" ? DeChoice::Jacobian : DeChoice::Auto;
+  const char* fallback = c.de == DeChoice::Kleinian ? "kleinian" : "auto";
+  std::string de = m.word("de", fallback, {"auto", "linear", "log", "jacobian", "kleinian"});
+  c.de = de == "linear"     ? DeChoice::Linear
+         : de == "log"      ? DeChoice::Log
+         : de == "jacobian" ? DeChoice::Jacobian
+         : de == "kleinian" ? DeChoice::Kleinian
+                            : DeChoice::Auto;
+  c.kleinian_size = m.number("kleinian_size", c.kleinian_size, Range::closed(1e-6, 1e6));
+}
+
+std::optional<Chain> read_chain(frontend::ValueReader& r, const SourceValue& body) {
+  if (body.is_map() && body.find("preset")) return read_named_preset(r, body);
+  const bool clean = r.sink().empty();  // the reader's own errors do not tell us
+  ChainReader cr(r);
+  frontend::MapReader m(r, body, "formula", {"iterations", "bailout", "iterate", "julia", "de", "kleinian_size", "repeat_from"});
+  if (!m.ok()) return std::nullopt;
+  Chain c;
+  read_settings(m, c, 12, 100);
   const SourceValue* list = m.require("iterate");
   if (!list) return std::nullopt;
   if (!list->is_seq() || list->items.empty()) {

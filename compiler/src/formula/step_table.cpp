@@ -7,11 +7,13 @@ namespace sdfc::formula {
 
 extern const StepDef kBoxFold, kSphereFold, kAbs, kPlaneFold, kOctaFold, kTetraFold, kMengerFold;
 extern const StepDef kRotate, kScale, kScaleXYZ, kTranslate, kAddC, kBulbPower, kExpr;
+extern const StepDef kSphericalInvert, kKleinianFold, kSurfFold, kPolyfold, kIcosaFold;
 
 const std::vector<const StepDef*>& steps() {
   static const std::vector<const StepDef*> all = [] {
     std::vector<const StepDef*> v{&kAbs,       &kAddC,   &kBoxFold, &kBulbPower, &kExpr,      &kMengerFold, &kOctaFold,
-                                  &kPlaneFold, &kRotate, &kScale,   &kScaleXYZ,  &kSphereFold, &kTetraFold, &kTranslate};
+                                  &kPlaneFold, &kRotate, &kScale,   &kScaleXYZ,  &kSphereFold, &kTetraFold, &kTranslate,
+                                  &kSphericalInvert, &kKleinianFold, &kSurfFold, &kPolyfold, &kIcosaFold};
     std::sort(v.begin(), v.end(), [](auto* a, auto* b) { return a->name < b->name; });
     return v;
   }();

@@ -10,6 +10,7 @@
 #include "animated_node.hpp"
 #include "domain_schema.hpp"
 #include "rotation_matrix.hpp"
+#include "sdfc/formula/preset.hpp"
 #include "sdfc/kinds/lowering.hpp"
 #include "sdfc/kinds/registry.hpp"
 #include "too_small.hpp"
@@ -37,6 +38,8 @@ const std::vector<std::string_view>& geometry_kinds() {
       if (d->kind > Kind::Capsule && !fractal(d)) v.push_back(d->yaml);
     v.push_back("segment");  // a second spelling of the capsule
     v.insert(v.end(), blend_kinds().begin(), blend_kinds().end());
+    for (const formula::Preset* p : formula::presets())  // presets not named like a built-in kind
+      if (!kinds::find(p->name)) v.push_back(p->name);
     return v;
   }();
   return all;
@@ -140,7 +143,9 @@ NodeId GeometryLowering::lower_kind(const SourceValue& key, const SourceValue& b
     double radius = m.number("radius", 0.1, Range::positive());
     return b_.make(Kind::Capsule, {a[0], a[1], a[2], bb[0], bb[1], bb[2], radius}, {}, at);
   }
-  if (const kinds::Description* d = kinds::find(std::string_view(k))) {
+  const kinds::Description* d = kinds::find(std::string_view(k));
+  if (!d && formula::find_preset(k)) d = kinds::find(Kind::Formula);  // a preset's own node
+  if (d) {
     kinds::Lowering l(*d, r_, b_, key, body);
     return d->lower(l);
   }

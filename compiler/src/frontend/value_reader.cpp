@@ -224,13 +224,17 @@ std::string ValueReader::word(const SourceValue& v, std::string_view what, std::
 
 MapReader::MapReader(ValueReader& r, const SourceValue& v, std::string_view what,
                      std::initializer_list<std::string_view> allowed)
+    : MapReader(r, v, what, std::vector<std::string_view>(allowed)) {}
+
+MapReader::MapReader(ValueReader& r, const SourceValue& v, std::string_view what,
+                     const std::vector<std::string_view>& allowed)
     : r_(r), v_(v), what_(what) {
   if (!v.is_map()) {
     r_.sink().error(v.loc, fmt::format("{}: expected a map of settings, got {}", what, v.kind_name()), "");
     ok_ = false;
     return;
   }
-  std::vector<std::string_view> keys(allowed);
+  const std::vector<std::string_view>& keys = allowed;
   for (const auto& [k, val] : v.entries) {
     bool known = false;
     for (auto a : keys) known = known || k.scalar == a;

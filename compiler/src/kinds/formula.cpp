@@ -6,6 +6,7 @@
 #include "fractal.hpp"
 #include "sdfc/formula/emit.hpp"
 #include "sdfc/formula/evaluate.hpp"
+#include "sdfc/formula/preset.hpp"
 #include "sdfc/formula/read_chain.hpp"
 #include "sdfc/reference/evaluator.hpp"
 
@@ -19,7 +20,10 @@ struct FormulaP {
 };
 
 ir::NodeId lower(Lowering& l) {
-  std::optional<formula::Chain> c = formula::read_chain(l.reader(), l.body());
+  // `formula: {...}`, or a preset's own node (`pseudo_kleinian: {...}`)
+  const formula::Preset* preset = formula::find_preset(l.key().scalar);
+  std::optional<formula::Chain> c = preset ? formula::read_preset(l.reader(), *preset, l.body(), l.key())
+                                           : formula::read_chain(l.reader(), l.body());
   if (!c) return ir::kNoNode;
   FormulaP p{double(c->iterations), double(c->iterations), c->bailout};
   p.chain = double(formula::intern(std::move(*c)));

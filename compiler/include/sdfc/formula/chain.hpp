@@ -32,7 +32,9 @@ struct Step {
 };
 
 // `de:` as written: auto picks from the chain.
-enum class DeChoice { Auto, Linear, Log, Jacobian };
+// Kleinian: Mandelbulber's pseudo-Kleinian estimate
+// max(rxy - kleinian_size, |rxy z.z| / r) / |dr| for chains that never escape.
+enum class DeChoice { Auto, Linear, Log, Jacobian, Kleinian };
 
 struct Chain {
   std::vector<Step> steps;  // repeats already unrolled
@@ -42,12 +44,15 @@ struct Chain {
   std::array<double, 3> c{0, 0, 0};  // julia's constant
   DeChoice de = DeChoice::Auto;
   int repeat_from = 0;  // iterations after the first start at this step
+  double kleinian_size = 1;  // de: kleinian's cylinder radius
+  std::string preset;        // the preset it was expanded from, if any
 };
 
 // The estimator the compiler chose and why (`sdfc check` prints it).
 struct Plan {
   bool jacobian = false;  // a running 3x3 Jacobian, else a scalar derivative
   bool log = false;       // 0.5 log(r) r / |dr|, else r / |dr|
+  bool kleinian = false;  // the pseudo-Kleinian form (DeChoice::Kleinian)
   std::string why;
 };
 Plan plan(const Chain& c);

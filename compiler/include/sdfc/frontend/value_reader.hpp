@@ -82,6 +82,8 @@ class MapReader {
  public:
   MapReader(ValueReader& r, const SourceValue& v, std::string_view what,
             std::initializer_list<std::string_view> allowed);
+  // Keys known only at run time (a formula preset's parameters).
+  MapReader(ValueReader& r, const SourceValue& v, std::string_view what, const std::vector<std::string_view>& allowed);
   bool ok() const { return ok_; }
   const SourceValue* get(std::string_view key) const;
   const SourceValue& self() const { return v_; }

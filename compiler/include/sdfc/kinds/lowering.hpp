@@ -37,6 +37,7 @@ class Lowering {
   ir::Builder& builder() { return b_; }
   const SourceValue& body() const { return body_; }
   const SourceLoc& at() const { return key_.loc; }
+  const SourceValue& key() const { return key_; }  // a preset's node: its name
 
  private:
   ir::NodeId make_node(std::vector<double> params);
