@@ -1,7 +1,11 @@
 // Formula chains on the CPU: the estimator the compiler picks for a chain,
 // repeats and windows, and the chain's double reference against the
 // built-in fractals it spells out (written independently in reference/).
+// Presets: a preset's own node is the formula naming it, the built-ins'
+// presets are the built-in kinds' fields, `sdfc check`'s account names them.
 #include <gtest/gtest.h>
+
+#include <fmt/format.h>
 
 #include <cmath>
 #include <random>
@@ -9,6 +13,7 @@
 
 #include "scene_text.hpp"
 #include "sdfc/formula/chain.hpp"
+#include "sdfc/formula/preset.hpp"
 #include "sdfc/passes/passes.hpp"
 #include "sdfc/reference/evaluator.hpp"
 
@@ -23,7 +28,8 @@ const ir::Node& formula_node(const ir::Module& m) {
   throw std::runtime_error("no formula node");
 }
 
-const formula::Chain& chain_of(const ir::Module& m) { return formula::chain(size_t(formula_node(m).params[0])); }
+size_t index_of(const ir::Module& m) { return size_t(formula_node(m).params[0]); }
+const formula::Chain& chain_of(const ir::Module& m) { return formula::chain(index_of(m)); }
 
 formula::Plan plan_of(const std::string& node) { return formula::plan(chain_of(module_of(node))); }
 
@@ -102,6 +108,69 @@ TEST(FormulaChain, NonConformalMandelboxChainIsTheJacobianMandelbox) {
   expect_same_field(
       "{formula: {iterations: 12, iterate: [box_fold, sphere_fold, {scale: -1.5}, {scale_xyz: [1.2, 1.0, 0.8]}, add_c]}}",
       "{mandelbox: {scale: -1.5, scale_xyz: [1.2, 1.0, 0.8], iterations: 12, de: jacobian}}", 2.0, 1e-9);
+}
+
+TEST(FormulaPreset, MandelboxPresetIsTheMandelbox) {
+  expect_same_field("{formula: {preset: mandelbox, scale: -1.5, iterations: 12}}",
+                    "{mandelbox: {scale: -1.5, iterations: 12}, step_factor: 1}", 2.0, 1e-9);
+}
+
+TEST(FormulaPreset, NonConformalMandelboxPresetIsTheJacobianMandelbox) {
+  expect_same_field("{formula: {preset: mandelbox, scale: -1.5, scale_xyz: [1.2, 1.0, 0.8], iterations: 12}}",
+                    "{mandelbox: {scale: -1.5, scale_xyz: [1.2, 1.0, 0.8], iterations: 12, de: jacobian}}", 2.0, 1e-9);
+}
+
+TEST(FormulaPreset, MandelboxPresetParametersAreTheMandelboxs) {
+  expect_same_field("{formula: {preset: mandelbox, scale: 2.2, folding_limit: 1.1, min_radius: 0.4, fixed_radius: 1.2, iterations: 10}}",
+                    "{mandelbox: {scale: 2.2, folding_limit: 1.1, min_radius: 0.4, fixed_radius: 1.2, iterations: 10}, step_factor: 1}", 2.0, 1e-9);
+}
+
+TEST(FormulaPreset, JuliaMandelboxPresetIsTheJuliaMandelbox) {
+  expect_same_field("{formula: {preset: mandelbox, scale: 2, julia: [0.8, -0.4, 0.3], iterations: 10}}",
+                    "{mandelbox: {scale: 2, julia: [0.8, -0.4, 0.3], iterations: 10}, step_factor: 1}", 2.0, 1e-9);
+}
+
+TEST(FormulaPreset, MandelbulbPresetIsTheMandelbulb) {
+  // inside the cube of 0.9 (|p| < 1.56): the built-in's far-field bound
+  // starts at 1.5 times its set radius (1.66), the chain's at twice the bailout
+  expect_same_field("{formula: {preset: mandelbulb, power: 8}}", "{mandelbulb: {power: 8}, step_factor: 1}", 0.9, 1e-6);
+}
+
+TEST(FormulaPreset, ANodeOfItsOwnIsTheFormulaNamingIt) {
+  EXPECT_EQ(index_of(module_of("{pseudo_kleinian: {min_r2: 0.4, iterations: 9}}")),
+            index_of(module_of("{formula: {preset: pseudo_kleinian, min_r2: 0.4, iterations: 9}}")));
+  EXPECT_NE(index_of(module_of("{pseudo_kleinian: {min_r2: 0.4}}")), index_of(module_of("{pseudo_kleinian: {min_r2: 0.3}}")));
+}
+
+TEST(FormulaPreset, TheAccountNamesThePresetItsStepsAndItsEstimator) {
+  const formula::Chain& c = formula::chain(index_of(module_of("{pseudo_kleinian: {box_size: [0.6, 0.7, 0.8]}}")));
+  std::string text = formula::describe(c);
+  EXPECT_NE(text.find("preset pseudo_kleinian"), std::string::npos) << text;
+  EXPECT_NE(text.find("surf_fold limit [0.6, 0.7, 0.8]"), std::string::npos) << text;
+  EXPECT_NE(text.find("kleinian_fold"), std::string::npos) << text;
+  EXPECT_TRUE(formula::plan(c).kleinian) << text;
+  // a scene's de: overrides the preset's own
+  EXPECT_FALSE(formula::plan(formula::chain(index_of(module_of("{pseudo_kleinian: {de: linear}}")))).kleinian);
+}
+
+// The defaults a preset documents are the ones it reads: a preset written
+// with every parameter at its default is the bare preset.
+TEST(FormulaPreset, EveryPresetBuildsFromItsDefaults) {
+  for (const formula::Preset* p : formula::presets()) {
+    SCOPED_TRACE(std::string(p->name));
+    std::string body;
+    for (const formula::PresetParam& q : p->params) {
+      body += body.empty() ? "" : ", ";
+      body += q.width == 1 ? fmt::format("{}: {}", q.name, q.fallback[0])
+                           : fmt::format("{}: [{}, {}, {}]", q.name, q.fallback[0], q.fallback[1], q.fallback[2]);
+    }
+    const std::string bare = fmt::format("{{formula: {{preset: {}}}}}", p->name);
+    const std::string full = fmt::format("{{formula: {{preset: {}{}{}}}}}", p->name, body.empty() ? "" : ", ", body);
+    const formula::Chain& c = formula::chain(index_of(module_of(bare)));
+    EXPECT_EQ(c.iterations, p->iterations);
+    EXPECT_FALSE(c.steps.empty());
+    EXPECT_EQ(index_of(module_of(full)), index_of(module_of(bare)));
+  }
 }
 
 }  // namespace
