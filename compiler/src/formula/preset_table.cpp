@@ -1,6 +1,5 @@
 // Every preset, by name.
-#include <algorithm>
-
+#include "by_name.hpp"
 #include "sdfc/formula/preset.hpp"
 
 namespace sdfc::formula {
@@ -9,20 +8,12 @@ extern const Preset kMandelbulbPreset, kMandelboxPreset, kMengerPreset, kSierpin
 extern const Preset kBulbPower2Preset, kPseudoKleinianPreset, kAmazingSurfPreset, kBoxFoldBulbPow2Preset;
 
 const std::vector<const Preset*>& presets() {
-  static const std::vector<const Preset*> all = [] {
-    std::vector<const Preset*> v{&kMandelbulbPreset, &kMandelboxPreset,      &kMengerPreset,      &kSierpinskiPreset,
-                                 &kKifsPreset,       &kBulbPower2Preset,     &kPseudoKleinianPreset, &kAmazingSurfPreset,
-                                 &kBoxFoldBulbPow2Preset};
-    std::sort(v.begin(), v.end(), [](auto* a, auto* b) { return a->name < b->name; });
-    return v;
-  }();
+  static const std::vector<const Preset*> all =
+      sorted_by_name<Preset>({&kMandelbulbPreset, &kMandelboxPreset, &kMengerPreset, &kSierpinskiPreset, &kKifsPreset,
+                              &kBulbPower2Preset, &kPseudoKleinianPreset, &kAmazingSurfPreset, &kBoxFoldBulbPow2Preset});
   return all;
 }
 
-const Preset* find_preset(std::string_view name) {
-  for (const Preset* p : presets())
-    if (p->name == name) return p;
-  return nullptr;
-}
+const Preset* find_preset(std::string_view name) { return find_by_name(presets(), name); }
 
 }  // namespace sdfc::formula

@@ -1,6 +1,5 @@
 // Every step a chain can name.
-#include <algorithm>
-
+#include "by_name.hpp"
 #include "sdfc/formula/step.hpp"
 
 namespace sdfc::formula {
@@ -10,20 +9,12 @@ extern const StepDef kRotate, kScale, kScaleXYZ, kTranslate, kAddC, kBulbPower, 
 extern const StepDef kSphericalInvert, kKleinianFold, kSurfFold, kPolyfold, kIcosaFold;
 
 const std::vector<const StepDef*>& steps() {
-  static const std::vector<const StepDef*> all = [] {
-    std::vector<const StepDef*> v{&kAbs,       &kAddC,   &kBoxFold, &kBulbPower, &kExpr,      &kMengerFold, &kOctaFold,
-                                  &kPlaneFold, &kRotate, &kScale,   &kScaleXYZ,  &kSphereFold, &kTetraFold, &kTranslate,
-                                  &kSphericalInvert, &kKleinianFold, &kSurfFold, &kPolyfold, &kIcosaFold};
-    std::sort(v.begin(), v.end(), [](auto* a, auto* b) { return a->name < b->name; });
-    return v;
-  }();
+  static const std::vector<const StepDef*> all = sorted_by_name<StepDef>(
+      {&kAbs, &kAddC, &kBoxFold, &kBulbPower, &kExpr, &kMengerFold, &kOctaFold, &kPlaneFold, &kRotate, &kScale, &kScaleXYZ,
+       &kSphereFold, &kTetraFold, &kTranslate, &kSphericalInvert, &kKleinianFold, &kSurfFold, &kPolyfold, &kIcosaFold});
   return all;
 }
 
-const StepDef* find_step(std::string_view name) {
-  for (const StepDef* d : steps())
-    if (d->name == name) return d;
-  return nullptr;
-}
+const StepDef* find_step(std::string_view name) { return find_by_name(steps(), name); }
 
 }  // namespace sdfc::formula
