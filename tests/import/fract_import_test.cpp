@@ -66,9 +66,7 @@ TEST(FractImport, MengerSpongeAndQuaternionJulia) {
 }
 
 TEST(FractImport, UnsupportedFormulasAreErrorsNamingThemAndTheirIds) {
-  // No formula_1: Mandelbulber's default, its own Mandelbulb (asin latitude), another shape than sdfc's.
-  EXPECT_EQ(error_of(fract("2.20", "N 10;\n")), "4:1 formula 'Mandelbulb' (id 2) is not supported yet");
-  EXPECT_EQ(error_of(fract("2.20", "formula_1 10;\n")), "5:11 formula 'Kaleidoscopic IFS' (id 10) is not supported yet");
+  EXPECT_EQ(error_of(fract("2.20", "formula_1 4;\n")), "5:11 formula 'Hypercomplex' (id 4) is not supported yet");
   EXPECT_EQ(error_of(fract("2.20", "formula_1 99999;\n")), "5:11 formula id 99999 is not supported yet");
   // A mapped formula with a setting that would change its shape.
   EXPECT_NE(error_of(fract("2.20", "formula_1 8;\n", "mandelbox_folding_value 3;\n"))
@@ -138,9 +136,9 @@ TEST(FractCommands, ImportCheckAndRenderWithSet) {
   // Known by its first line, whatever its name.
   std::string noext = dir.write("scene", fract("2.20", "formula_1 7;\nN 5;\n"));
   EXPECT_EQ(run_sdfc("check " + noext).code, 0);
-  test::RunResult bad = run_sdfc("check " + dir.write("bad.fract", fract("2.20", "formula_1 10;\n")));
+  test::RunResult bad = run_sdfc("check " + dir.write("bad.fract", fract("2.20", "formula_1 4;\n")));
   EXPECT_EQ(bad.code, 1);
-  EXPECT_TRUE(has(bad.err, "bad.fract:5:11: error: formula 'Kaleidoscopic IFS' (id 10) is not supported yet")) << bad.err;
+  EXPECT_TRUE(has(bad.err, "bad.fract:5:11: error: formula 'Hypercomplex' (id 4) is not supported yet")) << bad.err;
   // The input is never the output.
   EXPECT_NE(run_sdfc("import " + src + " -o " + src).code, 0);
   EXPECT_TRUE(has(test::read_text(src), "formula_1 7;"));

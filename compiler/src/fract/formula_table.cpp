@@ -1,6 +1,6 @@
 // The formula table (see formula_table.hpp): the mapped formulas' writers,
 // then every id Mandelbulber 2.20 knows with its name.
-#include "formula_table.hpp"
+#include "formula_writers.hpp"
 
 #include <fmt/format.h>
 
@@ -17,6 +17,8 @@ struct NameRow {
 constexpr NameRow kNames[] = {
 #include "formula_names.inc"
 };
+
+}  // namespace
 
 std::string from(const FormulaInput& in, const std::string& key) {
   return fmt::format("[fractal_{}] {}", in.slot, key);
@@ -36,35 +38,27 @@ void require_c_added(const FormulaInput& in) {
   if (k != Vec3{1, 1, 1}) unsupported_setting(in, "fractal_constant_factor", vec(k));
 }
 
+namespace {
+
 // Tglad's Mandelbox (mandelbox.cl): the box fold `sign(z)·folding_value − z`
 // beyond folding_limit is sdfc's clamp fold when folding_value = 2 × limit;
 // the sphere fold compares |z|² with the squared radii, as sdfc does.
 Node mandelbox(const FormulaInput& in) {
   const Params& f = in.fractal;
-  double scale = f.number("mandelbox_scale"), limit = f.number("mandelbox_folding_limit");
-  double value = f.number("mandelbox_folding_value");
-  double min_r = f.number("mandelbox_folding_min_radius"), fixed_r = f.number("mandelbox_folding_fixed_radius");
-  if (f.boolean("mandelbox_rotations_enabled")) unsupported_setting(in, "mandelbox_rotations_enabled", "true");
-  if (f.boolean("mandelbox_main_rotation_enabled")) unsupported_setting(in, "mandelbox_main_rotation_enabled", "true");
-  if (f.vec3("mandelbox_offset") != Vec3{0, 0, 0}) unsupported_setting(in, "mandelbox_offset", vec(f.vec3("mandelbox_offset")));
-  if (std::fabs(value - 2 * limit) > 1e-12 * std::max(1.0, std::fabs(limit)))
-    unsupported_setting(in, "mandelbox_folding_value", num(value) + " (only 2 x mandelbox_folding_limit maps)");
-  if (!(std::fabs(scale) > 1 && std::fabs(scale) <= 8)) unsupported_setting(in, "mandelbox_scale", num(scale));
-  if (!(min_r > 0 && min_r < fixed_r && fixed_r <= 100))
-    unsupported_setting(in, "mandelbox_folding_min_radius", num(min_r) + " with fixed radius " + num(fixed_r));
-  if (!(limit > 0)) unsupported_setting(in, "mandelbox_folding_limit", num(limit));
-  require_c_added(in);
+  ChainPart chain = mandelbox_chain(in);  // refuses what neither form maps
+  double scale = f.number("mandelbox_scale");
+  // A main rotation, a constant factor, no c or a scale in -1 ... 1: the
+  // chain, which has room for them; else the mandelbox kind.
+  if (f.boolean("mandelbox_main_rotation_enabled") || in.main.vec3("fractal_constant_factor") != Vec3{1, 1, 1} ||
+      !adds_c(in, true) || std::fabs(scale) <= 1)
+    return chain_formula(in, chain);
   Node n{"mandelbox", fmt::format("formula_{} {} ({})", in.slot, in.id, in.name), {}, {}, {}};
   n.fields = {{"scale", num(scale), from(in, "mandelbox_scale")},
-              {"min_radius", num(min_r), from(in, "mandelbox_folding_min_radius")},
-              {"fixed_radius", num(fixed_r), from(in, "mandelbox_folding_fixed_radius")},
-              {"folding_limit", num(limit), from(in, "mandelbox_folding_limit")},
+              {"min_radius", num(f.number("mandelbox_folding_min_radius")), from(in, "mandelbox_folding_min_radius")},
+              {"fixed_radius", num(f.number("mandelbox_folding_fixed_radius")), from(in, "mandelbox_folding_fixed_radius")},
+              {"folding_limit", num(f.number("mandelbox_folding_limit")), from(in, "mandelbox_folding_limit")},
               iterations_field(in, 200)};
-  if (in.julia) {
-    for (double c : in.julia_c)
-      if (std::fabs(c) > 10) unsupported_setting(in, "julia_c", vec(in.julia_c));
-    n.fields.push_back({"julia", vec(in.julia_c), "julia_mode true, julia_c"});
-  }
+  if (in.julia) n.fields.push_back({"julia", vec(julia_constant(in)), "julia_mode true, julia_c"});
   return n;
 }
 
@@ -72,9 +66,7 @@ Node mandelbox(const FormulaInput& in) {
 // z.z −= 2 where z.z > 1 — sdfc's fold with scale 3 and shift scale − 1.
 Node menger_sponge(const FormulaInput& in) {
   double s = in.fractal.number("transf_scale_3");
-  if (s != 3) unsupported_setting(in, "transf_scale_3", num(s) + " (only 3 maps: Mandelbulber shifts by 2 at any scale)");
-  if (in.main.boolean(fmt::format("dont_add_c_constant_{}", in.slot)))  // this formula adds no c unless asked
-    unsupported_setting(in, fmt::format("dont_add_c_constant_{}", in.slot), "true (adds c)");
+  if (s != 3 || adds_c(in, false)) return chain_formula(in, menger_chain(in));  // the kind has neither
   Node n{"menger", fmt::format("formula_{} {} ({})", in.slot, in.id, in.name), {}, {}, {}};
   n.fields = {{"scale", "3", from(in, "transf_scale_3")},
               iterations_field(in, 12)};
@@ -99,9 +91,12 @@ Node quaternion(const FormulaInput& in) {
 }
 
 constexpr Formula kMapped[] = {
-    {5, "Quaternion", 10, quaternion, true},  // y -> -y commutes with squaring: J(c) mirrored is J(mirrored c)
-    {7, "Menger sponge", 10, menger_sponge, true},
-    {8, "Mandelbox", 100, mandelbox, true},
+    {2, "Mandelbulb", 10, mandelbulb, mandelbulb_chain, true},  // its writer mirrors the alpha offset
+    {3, "Mandelbulb - Power 2", 10, mandelbulb_power2, mandelbulb_power2_chain, true},
+    {5, "Quaternion", 10, quaternion, nullptr, true},  // y -> -y commutes with squaring: J(c) mirrored is J(mirrored c)
+    {7, "Menger sponge", 10, menger_sponge, menger_chain, true},
+    {8, "Mandelbox", 100, mandelbox, mandelbox_chain, true},
+    {10, "Kaleidoscopic IFS", 10, ifs, ifs_chain, true},  // its writer mirrors its vectors and rotations
 };
 
 }  // namespace
@@ -112,7 +107,7 @@ const Formula* find_formula(int id) {
   // Known but not mapped: a row without a writer, kept per id.
   static std::vector<Formula> unmapped = [] {
     std::vector<Formula> v;
-    for (const NameRow& r : kNames) v.push_back({r.id, r.name, 10, nullptr, false});
+    for (const NameRow& r : kNames) v.push_back({r.id, r.name, 10, nullptr, nullptr, false});
     return v;
   }();
   for (const Formula& f : unmapped)

@@ -25,15 +25,26 @@ struct FormulaInput {
   int iterations;         // N
   double bailout;         // the bailout Mandelbulber uses for this formula
   std::vector<std::string>* warnings;
+  bool mirror_y;          // legacy_coordinate_system: the scene is mirrored y -> -y
 };
 
 using FormulaWriter = Node (*)(const FormulaInput&);
+
+// One formula iteration as formula-chain steps (YAML flow items, c added
+// where Mandelbulber adds it), so that hybrids can string formulas together.
+struct ChainPart {
+  std::string steps;  // "{box_fold: {limit: 1}}, ..., add_c"
+  std::string how;    // the comment: which keys, which rule
+  int cap;            // sdfc's iteration cap for this formula alone
+};
+using ChainWriter = ChainPart (*)(const FormulaInput&);
 
 struct Formula {
   int id;
   const char* name;
   double default_bailout;  // used when use_default_bailout is on
   FormulaWriter write;     // nullptr: not supported yet
+  ChainWriter chain;       // nullptr: cannot be a step of a hybrid
   bool mirror_symmetric;   // the shape is its own mirror image in y -> -y (legacy_coordinate_system needs that)
 };
 

@@ -66,6 +66,10 @@ constexpr Row kFractal[] = {
     {"mandelbox_folding_min_radius", "0.5"}, {"mandelbox_folding_fixed_radius", "1"},
     {"mandelbox_offset", "0 0 0"}, {"mandelbox_rotations_enabled", "0"}, {"mandelbox_main_rotation_enabled", "0"},
     {"transf_scale_3", "3"},
+    {"IFS_abs_x", "0"}, {"IFS_abs_y", "0"}, {"IFS_abs_z", "0"}, {"IFS_direction_#", "1 0 0"}, {"IFS_distance_#", "0"},
+    {"IFS_edge", "0 0 0"}, {"IFS_edge_enabled", "0"}, {"IFS_enabled_#", "0"}, {"IFS_intensity_#", "1"},
+    {"IFS_menger_sponge_mode", "0"}, {"IFS_offset", "1 0 0"}, {"IFS_rotation", "0 0 0"}, {"IFS_rotation_enabled", "0"},
+    {"IFS_rotations_#", "0 0 0"}, {"IFS_scale", "2"}, {"mandelbox_rotation_main", "0 0 0"},
 };
 
 template <size_t N>
@@ -78,12 +82,12 @@ const char* find(const Row (&rows)[N], std::string_view key) {
 }  // namespace
 
 const char* default_value(const std::string& key, bool fractal_section) {
-  if (fractal_section) return find(kFractal, key);
-  if (const char* v = find(kMain, key)) return v;
-  size_t end = key.size();
+  if (const char* v = fractal_section ? find(kFractal, key) : find(kMain, key)) return v;
+  size_t end = key.size();  // KEY_N: the row KEY_#
   while (end > 0 && std::isdigit(static_cast<unsigned char>(key[end - 1]))) --end;
   if (end == key.size() || end == 0 || key[end - 1] != '_') return nullptr;
-  return find(kMain, key.substr(0, end) + "#");
+  std::string row = key.substr(0, end) + "#";
+  return fractal_section ? find(kFractal, row) : find(kMain, row);
 }
 
 }  // namespace sdfc::fract

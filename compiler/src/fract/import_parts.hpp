@@ -1,10 +1,12 @@
 #pragma once
 // The importer's parts, shared between its files; not a public interface.
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "sdfc/fract/fract_file.hpp"
 #include "sdfc/fract/fract_params.hpp"
+#include "formula_table.hpp"
 #include "yaml_text.hpp"
 
 namespace sdfc::fract {
@@ -40,6 +42,15 @@ CameraFrame frame_of(const Vec3& position, const Vec3& target, const Vec3& top, 
 double vertical_fov_degrees(const Params& main, double version);
 
 Node import_geometry(const File& file, const Params& main, ImportContext& w);
+
+// One slot's part of a hybrid (hybrid_chain.cpp): its steps and its bailout.
+struct HybridPart {
+  ChainPart part;
+  double bailout;
+};
+// The hybrid sequence of formula_N (1 ... 9) as one formula chain; julia
+// mode adds its constant (the caller's julia field).
+Node hybrid_chain(const Params& main, SourceLoc at, const std::function<HybridPart(int slot)>& part_of);
 // camera:, render:, background:, lights:, materials:, effects: as YAML text.
 std::string import_view(const File& file, const Params& main, const std::string& path, ImportContext& w);
 std::string import_look(const File& file, const Params& main, ImportContext& w);

@@ -5,7 +5,10 @@
 // formula_scale_N) or a hybrid (one orbit through several formulas).
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "formula_table.hpp"
+#include "formula_writers.hpp"
 #include "import_parts.hpp"
 
 namespace sdfc::fract {
@@ -49,12 +52,15 @@ void refuse_unmapped_shape_keys(const Params& main) {
       fail(e.loc, fmt::format("Mandelbulber primitives are not supported yet ({})", key));
 }
 
-Node formula_node(const Slot& s, const File& file, const Params& main, ImportContext& w) {
+// Calls use(formula, input) with the slot's FormulaInput.
+template <class Use>
+auto with_input(const Slot& s, const File& file, const Params& main, ImportContext& w, bool hybrid, Use use) {
   const Formula* f = find_formula(s.id);
   std::string name = f ? f->name : formula_name(s.id);
-  if (!f || !f->write)
-    fail(s.loc, formula_label(s.id) + " is not supported yet",
-         "sdfc imports the Mandelbox (8), the Menger sponge (7) and the quaternion in julia mode (5)");
+  if (!f || !f->write || (hybrid && !f->chain))
+    fail(s.loc, formula_label(s.id) + " is not supported yet" + (hybrid ? " (in a hybrid)" : ""),
+         "sdfc imports the Mandelbulb (2), Mandelbulb - Power 2 (3), the Mandelbox (8), the Menger sponge (7), the "
+         "Kaleidoscopic IFS (10) and the quaternion in julia mode (5)");
   if (w.mirror_y && !f->mirror_symmetric)
     fail(main.loc("legacy_coordinate_system"), formula_label(s.id) + " in the legacy coordinate system is not supported yet");
   Params fractal(file.fractal[size_t(s.n - 1)], true);
@@ -69,8 +75,29 @@ Node formula_node(const Slot& s, const File& file, const Params& main, ImportCon
                   w.world(main.vec3("julia_c")),
                   main.integer("N"),
                   use_default ? f->default_bailout : main.number("bailout"),
-                  &w.lines};
-  return f->write(in);
+                  &w.lines,
+                  w.mirror_y};
+  return use(*f, in);
+}
+
+Node formula_node(const Slot& s, const File& file, const Params& main, ImportContext& w) {
+  return with_input(s, file, main, w, false, [](const Formula& f, const FormulaInput& in) { return f.write(in); });
+}
+
+Node hybrid_node(const std::vector<Slot>& slots, const File& file, const Params& main, ImportContext& w) {
+  for (const Slot& s : slots)  // name the first formula that has no mapping, before the sequence
+    with_input(s, file, main, w, true, [](const Formula&, const FormulaInput&) { return 0; });
+  Vec3 julia{};
+  Node n = hybrid_chain(main, slots[0].loc, [&](int slot) {
+    auto s = std::find_if(slots.begin(), slots.end(), [&](const Slot& x) { return x.n == slot; });
+    if (s == slots.end()) fail(slots[0].loc, "this hybrid sequence has iterations without a formula (formula_start/stop_iteration_N)");
+    return with_input(*s, file, main, w, true, [&](const Formula& f, const FormulaInput& in) {
+      if (in.julia) julia = julia_constant(in);
+      return HybridPart{f.chain(in), in.bailout};
+    });
+  });
+  if (main.boolean("julia_mode")) n.fields.push_back({"julia", vec(julia), "julia_mode true, julia_c x fractal_constant_factor"});
+  return n;
 }
 
 // limits_enabled keeps the fractal inside the box limit_min ... limit_max:
@@ -101,16 +128,7 @@ Node import_geometry(const File& file, const Params& main, ImportContext& w) {
     if (slots[0].n != 1) fail(main.loc("formula_1"), "formula_1 is 0 (none) and neither hybrid nor boolean mode is on");
     slots.resize(1);
   }
-  if (!boolean_mode && hybrid && slots.size() > 1) {
-    for (const Slot& s : slots) {  // name the first formula that has no mapping at all
-      const Formula* f = find_formula(s.id);
-      if (!f || !f->write) fail(s.loc, formula_label(s.id) + " is not supported yet (in a hybrid)");
-    }
-    std::string names;
-    for (const Slot& s : slots) names += (names.empty() ? "" : ", ") + formula_label(s.id);
-    fail(slots[0].loc, fmt::format("a hybrid of {} is not supported yet", names),
-         "sdfc's hybrid node mixes Mandelbulb and Mandelbox steps; Mandelbulber's Mandelbulb (id 2) has another shape");
-  }
+  if (!boolean_mode && hybrid && slots.size() > 1) return with_limits(hybrid_node(slots, file, main, w), main, w);
   if (!boolean_mode) return with_limits(formula_node(slots[0], file, main, w), main, w);
 
   Node root;

@@ -127,7 +127,9 @@ std::string effects(const Params& main, ImportContext& w) {
     if (vis > 0) {
       o += commented("  fog:", "basic_fog_enabled");
       o += commented("    color: " + colour_of(main, "basic_fog_color"), "basic_fog_color");
-      o += commented("    density: " + num(1.0 / vis), "1 / basic_fog_visibility");
+      // sdfc's density stops at 1000 (a fog that hides everything 1/1000 away).
+      o += commented("    density: " + num(std::min(1.0 / vis, 1000.0)), vis < 1e-3 ? "1 / basic_fog_visibility, at sdfc's cap 1000"
+                                                                              : "1 / basic_fog_visibility");
     }
   }
   if (main.boolean("raytraced_reflections") && main.number("mat1_reflectance") > 0)
