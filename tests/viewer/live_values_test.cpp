@@ -179,5 +179,26 @@ TEST(LiveValues, SaveChangesOnlyTheEditedNumbersAndUndoRestoresTheFile) {
   EXPECT_NE(read_all(f.path).find("radius: 1.25"), std::string::npos);
 }
 
+// A checkbox: true/false shapes the code, so it rebuilds; it is saved as the word.
+TEST(LiveValues, BooleansRebuildAndAreSavedAsWords) {
+  SceneFile f;
+  std::ofstream(f.path, std::ios::app) << "render: {dither: false, max_steps: 200}\n";
+  const std::string original = read_all(f.path);
+  SceneSession scene(device(), {f.path.string(), {}, 8});
+  LiveValues live(scene);
+  EXPECT_EQ(live.value("render.dither"), 0);
+  EXPECT_EQ(live.set_bool("render.dither", true), LiveValues::Change::Rebuilding);
+  ASSERT_TRUE(wait_for_build(live)) << scene.error();
+  EXPECT_TRUE(scene.module().plan.march.dither);
+  EXPECT_TRUE(live.changed("render.dither"));
+  ASSERT_EQ(live.save(), LiveValues::Saved::Written);
+  std::string expected = original;
+  expected.replace(expected.find("dither: false") + 8, 5, "true");
+  EXPECT_EQ(read_all(f.path), expected);
+  EXPECT_TRUE(live.undo());
+  ASSERT_EQ(live.save(), LiveValues::Saved::Written);
+  EXPECT_EQ(read_all(f.path), original);
+}
+
 }  // namespace
 }  // namespace sdfc::viewer
