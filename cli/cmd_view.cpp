@@ -96,7 +96,7 @@ Action add_view(CLI::App& app) {
       ->type_name("PATH[=LO:HI]");
   cmd->add_option("--events", a->events,
                   "Drive the window from a script of key presses, panel edits, waits and window snapshots "
-                  "(one command a line: key NAME, set PATH VALUE, wait SECONDS, settle, snap FILE.png, quit)")
+                  "(one command a line: key NAME, set PATH VALUE, wait SECONDS, settle, snap FILE.png, hires W H SAMPLES, quit)")
       ->check(CLI::ExistingFile);
   cmd->add_option("--benchmark", a->benchmark,
                   "Render at full resolution for SECONDS, playing the scene's camera.path (else orbiting the "

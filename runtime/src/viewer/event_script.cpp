@@ -64,11 +64,11 @@ std::vector<ScriptCommand> read_event_script(const std::string& path) {
     ScriptCommand c;
     c.line = line;
     if (!(words >> c.verb)) continue;
-    words >> c.arg >> c.arg2;
+    words >> c.arg >> c.arg2 >> c.arg3;
     const SourceLoc at(name, line, int(text.find(c.verb)) + 1);
-    static const std::vector<std::string_view> kVerbs = {"key", "set", "wait", "settle", "snap", "quit"};
+    static const std::vector<std::string_view> kVerbs = {"key", "set", "wait", "settle", "snap", "hires", "quit"};
     if (std::find(kVerbs.begin(), kVerbs.end(), c.verb) == kVerbs.end())
-      fail(at, fmt::format("unknown command '{}': expected key, set, wait, settle, snap or quit", c.verb),
+      fail(at, fmt::format("unknown command '{}': expected key, set, wait, settle, snap, hires or quit", c.verb),
            did_you_mean(c.verb, kVerbs));
     char* end = nullptr;
     if (c.verb == "key" && key_of(c.arg).first == SDLK_UNKNOWN)
@@ -77,6 +77,13 @@ std::vector<ScriptCommand> read_event_script(const std::string& path) {
       fail(at, fmt::format("wait: expected seconds from 0 to 3600, got '{}'", c.arg));
     if (c.verb == "set" && (c.arg.empty() || c.arg2.empty() || (std::strtod(c.arg2.c_str(), &end), *end)))
       fail(at, "set: expected a path and a number, e.g. 'set scene.mandelbox.scale 2.2'");
+    auto whole = [](const std::string& t, int lo, int hi) {
+      char* e = nullptr;
+      const long n = std::strtol(t.c_str(), &e, 10);
+      return !t.empty() && !*e && n >= lo && n <= hi;
+    };
+    if (c.verb == "hires" && !(whole(c.arg, 16, 16384) && whole(c.arg2, 16, 16384) && whole(c.arg3, 1, 1024)))
+      fail(at, "hires: expected WIDTH HEIGHT SAMPLES (16 to 16384, and 1 to 1024), e.g. 'hires 1920 1080 16'");
     if (c.verb == "snap" && c.arg.empty()) fail(at, "snap: expected the PNG file to write");
     out.push_back(c);
   }
@@ -102,6 +109,10 @@ void run_event_script(Viewer& v, SdlWindow& window, SceneSession& scene, const s
       step_for(v, std::strtod(c.arg.c_str(), nullptr));
     } else if (c.verb == "settle") {
       settle(v, scene);
+    } else if (c.verb == "hires") {
+      v.tools().hires_width = std::atoi(c.arg.c_str());
+      v.tools().hires_height = std::atoi(c.arg2.c_str());
+      v.tools().hires_samples = std::atoi(c.arg3.c_str());
     } else if (c.verb == "snap") {
       snap(window, c.arg);
     }

@@ -7,6 +7,7 @@
 //   wait SECONDS    keep the viewer running that long
 //   settle          run until no build or hi-res render is running and the picture is final
 //   snap FILE.png   the window as shown (picture and panel) to a PNG
+//   hires W H N     the size and samples of the next hi-res render (key h)
 //   quit            close the viewer
 #include <string>
 #include <vector>
@@ -17,7 +18,7 @@ namespace sdfc::viewer {
 
 struct ScriptCommand {
   int line = 0;
-  std::string verb, arg, arg2;
+  std::string verb, arg, arg2, arg3;
 };
 
 // Reads and checks the whole script first: a SceneError "FILE:LINE:COL: error: ..." for a bad line.

@@ -59,6 +59,13 @@ bool LiveValues::changed(const std::string& path) const {
   return it != edits_.end() && file_value(it->first) != it->second;
 }
 
+bool LiveValues::changed_under(const std::string& path) const {
+  const std::string prefix = dotted_path(path) + ".";
+  for (auto it = edits_.lower_bound(prefix); it != edits_.end() && it->first.compare(0, prefix.size(), prefix) == 0; ++it)
+    if (changed(it->first)) return true;
+  return false;
+}
+
 std::vector<std::string> LiveValues::overrides() const {
   std::vector<std::string> out = base_sets_;
   for (const auto& [p, v] : edits_) out.push_back(p + "=" + text_of(p, v));

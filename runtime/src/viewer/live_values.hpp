@@ -31,6 +31,7 @@ class LiveValues {
   Change set_bool(const std::string& path, bool value);
   double value(const std::string& path) const;  // the edited value, or the file's (true: 1, false: 0)
   bool changed(const std::string& path) const;  // differs from the file
+  bool changed_under(const std::string& path) const;  // a value below `path` (a node) differs from the file
   // Background build with every edited value baked; the unlocked slots go.
   void bake();
   bool unlocked_now() const { return !scene_.slots().empty(); }

@@ -135,7 +135,8 @@ void ParamPanel::number(const std::string& label, const std::string& path, const
   if (edited) touched(live_.set(path, double(x)));
 }
 
-void ParamPanel::colour(const std::string& label, const std::string& path) {
+// Three numbers on one row: a colour picker for a colour, else three drag fields.
+void ParamPanel::triple(const std::string& label, const std::string& path, bool colour) {
   float c[3];
   bool changed = false;
   for (int i = 0; i < 3; ++i) {
@@ -144,7 +145,9 @@ void ParamPanel::colour(const std::string& label, const std::string& path) {
   }
   if (changed) ImGui::PushStyleColor(ImGuiCol_Text, kChanged);
   ImGui::PushID(path.c_str());
-  const bool edited = ImGui::ColorEdit3(label.c_str(), c, ImGuiColorEditFlags_Float);
+  const float speed = std::max({std::fabs(c[0]), std::fabs(c[1]), std::fabs(c[2]), 1.0f}) * 0.005f;
+  const bool edited = colour ? ImGui::ColorEdit3(label.c_str(), c, ImGuiColorEditFlags_Float)
+                             : ImGui::DragFloat3(label.c_str(), c, speed, 0, 0, "%.4g");
   ImGui::PopID();
   if (changed) ImGui::PopStyleColor();
   if (edited)
@@ -165,16 +168,17 @@ void ParamPanel::checkbox(const std::string& label, const std::string& path) {
 
 void ParamPanel::entry(const std::string& label, const std::string& p, const SourceValue& child) {
   double x = 0;
-  const bool colour3 = child.is_seq() && child.items.size() == 3 && label.find("color") != std::string::npos &&
-                       std::all_of(child.items.begin(), child.items.end(), [&](const SourceValue& i) { return numeric(i, &x); });
+  const bool three = child.is_seq() && child.items.size() == 3 &&
+                     std::all_of(child.items.begin(), child.items.end(), [&](const SourceValue& i) { return numeric(i, &x); });
   if (numeric(child, &x)) {
     number(label, p, child);
-  } else if (colour3) {
-    colour(label, p);
+  } else if (three) {
+    triple(label, p, label.find("color") != std::string::npos);
   } else if (child.is_scalar() && !child.quoted && (child.scalar == "true" || child.scalar == "false")) {
     checkbox(label, p);
   } else if (child.is_map() || child.is_seq()) {
     const ImGuiTreeNodeFlags open = values_in(child) <= kOpenUpTo ? ImGuiTreeNodeFlags_DefaultOpen : 0;
+    if (live_.changed_under(p)) ImGui::SetNextItemOpen(true);  // a changed value stays in sight
     if (ImGui::TreeNodeEx(p.c_str(), open, "%s  (line %d)", label.c_str(), child.loc.line)) {
       tree(child, p);
       ImGui::TreePop();
@@ -195,11 +199,11 @@ void ParamPanel::sections() {
     const char* title;
     std::vector<std::string_view> keys;
   };
-  static const Section kSections[] = {{"Camera", {"camera"}},
+  static const Section kSections[] = {{"Scene", {"scene"}},
+                                      {"Camera", {"camera"}},
                                       {"Lights", {"lights"}},
                                       {"Materials", {"materials"}},
-                                      {"Effects", {"effects", "render", "background"}},
-                                      {"Scene", {"scene"}}};
+                                      {"Effects", {"effects", "render", "background"}}};
   const SourceValue& file = live_.file();
   auto listed = [&](std::string_view key) {
     for (const auto& s : kSections)
@@ -215,8 +219,10 @@ void ParamPanel::sections() {
     for (std::string_view k : s.keys) {
       const SourceValue* v = file.find(k);
       if (!v) continue;
-      if (s.keys.size() == 1 && v->is_map()) tree(*v, std::string(k));  // the section is the key: no second level
-      else entry(std::string(k), std::string(k), *v);
+      if (k == "scene") ImGui::SetNextItemOpen(true, ImGuiCond_Once);  // the root node (a union of many) starts open
+      if (s.keys.size() == 1 && v->is_map() && !camera) tree(*v, std::string(k));  // the section is the key: no second level
+      else if (!camera) entry(std::string(k), std::string(k), *v);
+      else ImGui::SetNextItemOpen(false, ImGuiCond_Once), entry("in the file", "camera", *v);  // the view above moves apart from it
     }
   }
   std::vector<const std::pair<SourceValue, SourceValue>*> rest;
@@ -231,7 +237,8 @@ void ParamPanel::draw() {
   ImGui_ImplSDL2_NewFrame();
   ImGui::NewFrame();
   ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(380, 460), ImGuiCond_FirstUseEver);
+  const float tall = ImGui::GetIO().DisplaySize.y - 16;
+  ImGui::SetNextWindowSize(ImVec2(400, std::clamp(tall, 200.0f, 720.0f)), ImGuiCond_FirstUseEver);
   ImGui::Begin("Scene");
   if (ImGui::Button("Save")) save();
   ImGui::SameLine();

@@ -1,11 +1,11 @@
 #pragma once
 // The F2 parameter panel (Dear ImGui over the SDL renderer): the scene file
-// in sections (camera with the current view, bookmarks and the hi-res
-// render; lights; materials; effects with render and background; the scene
-// tree; anything else), each a tree of its YAML keys with their lines.
-// Numbers are sliders (the range an unlocked value was built for) or drag
-// fields, colours colour pickers, true/false checkboxes; changed values in
-// yellow. Changes go to LiveValues; after a few idle seconds the panel
+// in sections (the scene tree; camera with the current view, bookmarks and
+// the hi-res render; lights; materials; effects with render and background;
+// anything else), each a tree of its YAML keys with their lines. Numbers
+// are sliders (the range an unlocked value was built for) or drag fields,
+// three numbers one row, colours colour pickers, true/false checkboxes;
+// changed values in yellow. Changes go to LiveValues; after a few idle seconds the panel
 // bakes the values into a fresh kernel.
 #include <string>
 
@@ -43,7 +43,7 @@ class ParamPanel {
   void tree(const SourceValue& v, const std::string& path);
   void checkbox(const std::string& label, const std::string& path);
   void number(const std::string& label, const std::string& path, const SourceValue& v);
-  void colour(const std::string& label, const std::string& path);
+  void triple(const std::string& label, const std::string& path, bool colour);
   void touched(LiveValues::Change c);
 
   LiveValues& live_;

@@ -14,7 +14,9 @@ bool draw_view_tools(ViewTools& tools) {
   const ir::Camera c = tools.rig().camera();
   ImGui::TextDisabled("view: position [%.3g, %.3g, %.3g]  fov %.3g", c.position[0], c.position[1], c.position[2],
                       c.fov_degrees);
-  ImGui::TextDisabled("C prints it as a camera line; Shift+1...9 keeps it, 1...9 goes back");
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  ImGui::TextWrapped("C prints it as a camera line; Shift+1...9 keeps it, 1...9 goes back");
+  ImGui::PopStyleColor();
   if (!tools.bookmarks().list().empty()) {
     ImGui::Text("bookmarks:");
     for (const auto& b : tools.bookmarks().list()) {
