@@ -1,5 +1,5 @@
 #pragma once
-// Camera bookmarks: Ctrl+1 ... Ctrl+9 keeps the current view under the key,
+// Camera bookmarks: Shift+1 ... Shift+9 keeps the current view under the key,
 // 1 ... 9 goes back to it. They live in the scene file's `bookmarks:` list
 // (read by the front end when the scene loads; written by LiveValues).
 #include <optional>
