@@ -25,6 +25,7 @@ namespace {
 namespace fs = std::filesystem;
 
 using test::device;
+using test::read_all;
 
 const std::string kScene =
     "# a sphere beside a box (comments and spacing must survive a save)\n"
@@ -40,13 +41,6 @@ const std::string kScene =
     "      translate: [1.5, 0, 0]\n";
 
 constexpr int kW = 96, kH = 64;
-
-std::string read_all(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 struct SceneFile {
   fs::path dir = fs::temp_directory_path() / ("sdfc_live_" + std::to_string(::getpid()));

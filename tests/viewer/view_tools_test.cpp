@@ -24,6 +24,9 @@ namespace sdfc::viewer {
 namespace {
 
 namespace fs = std::filesystem;
+using test::key;
+using test::read_all;
+using test::read_png;
 using test::step_until;
 
 const std::string kScene =
@@ -36,22 +39,6 @@ const std::string kScene =
     "      translate: [-1, 0, 0]\n"
     "    - box: {size: [1, 1, 1]}\n"
     "      translate: [1.2, 0, 0]\n";
-
-std::string read_all(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-void key(SDL_Keycode k, Uint16 mod = KMOD_NONE) {
-  SDL_Event e{};
-  e.type = SDL_KEYDOWN;
-  e.key.keysym.sym = k;
-  e.key.keysym.mod = mod;
-  e.key.state = SDL_PRESSED;
-  ASSERT_EQ(SDL_PushEvent(&e), 1) << SDL_GetError();
-}
 
 struct SceneDir {
   fs::path dir = fs::path(::testing::TempDir()) / ("sdfc_views_" + std::to_string(::getpid()));
@@ -133,15 +120,6 @@ TEST(ViewTools, BookmarksAreKeptInTheFileAndRecalledOnLoad) {
   key(SDLK_KP_3);
   ASSERT_TRUE(step_until(v, [&] { return v.last_frame().rendered && same_place(v.rig().camera(), elsewhere, 1e-9); }));
   EXPECT_EQ(v.last_image(), there);
-}
-
-std::vector<std::uint8_t> read_png(const std::string& path, int& w, int& h) {
-  int channels = 0;
-  stbi_uc* px = stbi_load(path.c_str(), &w, &h, &channels, 3);
-  if (!px) return {};
-  std::vector<std::uint8_t> v(px, px + std::size_t(w) * h * 3);
-  stbi_image_free(px);
-  return v;
 }
 
 // `sdfc render`'s kernel for the file with `sets`, at `camera`.
