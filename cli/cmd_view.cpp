@@ -9,6 +9,8 @@
 
 #include "cli_support.hpp"
 #include "commands.hpp"
+#include "sdfc/source/unlock.hpp"
+#include "viewer/event_script.hpp"
 #include "viewer/viewer.hpp"
 
 namespace sdfc::cli {
@@ -24,12 +26,17 @@ struct ViewArgs {
   double benchmark = 0;
   double orbit_degrees = 360;
   std::string screenshot_dir = ".";
+  std::vector<std::string> unlock;
+  std::string events;
 };
 
 int run_view(const ViewArgs& a) {
+  const std::vector<viewer::ScriptCommand> script = a.events.empty() ? std::vector<viewer::ScriptCommand>{}
+                                                                     : viewer::read_event_script(a.events);
   sdfrt::Device device = sdfrt::open_device(a.device.empty() ? std::nullopt : std::optional<std::string>(a.device));
   bool cpu = device.info().type == sdfrt::DeviceType::Cpu;
   viewer::SceneOptions so{a.scene.path, a.scene.sets, a.simd_width > 0 ? a.simd_width : default_simd_width(cpu)};
+  for (const auto& u : a.unlock) so.unlocks.push_back(parse_unlock(u));
   std::cerr << fmt::format("compiling {} for {}\n", a.scene.path, device.info().device_name);
   viewer::SceneSession scene(device, so);
   const auto& plan = scene.module().plan;
@@ -61,8 +68,10 @@ int run_view(const ViewArgs& a) {
     return kOk;
   }
   std::cerr << "W/A/S/D move, Q/E or Space/Ctrl down/up, drag to look, wheel speed, Shift fast, Tab fly/orbit,\n"
-               "P screenshot, C print camera, F1 stats in the title, R reset, Esc quit\n";
-  v.run();
+               "P screenshot, C print camera, F1 stats in the title, F2 parameter panel, 1-9 go to a kept view,\n"
+               "Shift+1-9 keep the view in the scene file, H render this view to a PNG beside the scene, R reset, Esc quit\n";
+  if (!a.events.empty()) viewer::run_event_script(v, *window, scene, script);
+  else v.run();
   return kOk;
 }
 
@@ -81,6 +90,14 @@ Action add_view(CLI::App& app) {
   cmd->add_option("--samples", a->samples, "Samples per pixel to accumulate while the camera is still (default 16)")
       ->check(CLI::Range(1, 1024));
   cmd->add_option("--screenshot-dir", a->screenshot_dir, "Where P saves screenshots (default: the current directory)");
+  cmd->add_option("--unlock", a->unlock,
+                  "PATH[=LO:HI]: the value at PATH is read per frame instead of baked (as the F2 panel does when "
+                  "you touch it); with --benchmark, measures the live kernel's frame time")
+      ->type_name("PATH[=LO:HI]");
+  cmd->add_option("--events", a->events,
+                  "Drive the window from a script of key presses, panel edits, waits and window snapshots "
+                  "(one command a line: key NAME, set PATH VALUE, wait SECONDS, settle, snap FILE.png, hires W H SAMPLES, quit)")
+      ->check(CLI::ExistingFile);
   cmd->add_option("--benchmark", a->benchmark,
                   "Render at full resolution for SECONDS, playing the scene's camera.path (else orbiting the "
                   "target), print frame-time statistics and exit")

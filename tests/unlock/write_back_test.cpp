@@ -76,6 +76,8 @@ TEST(WriteBack, RefusesWhatItCannotWriteExactly) {
 TEST(WriteBack, NumbersAreTheShortestTextThatReadsBack) {
   EXPECT_EQ(yaml_number(0.75), "0.75");
   EXPECT_EQ(yaml_number(2), "2");
+  EXPECT_EQ(yaml_number(40), "40");  // a slider left at 40 is saved as people write it
+  EXPECT_EQ(yaml_number(1500), "1500");
   EXPECT_EQ(yaml_number(-1e-5), "-1e-05");
   EXPECT_EQ(yaml_number(0.1 + 0.2), "0.30000000000000004");
   for (double x : {1.0 / 3, 123456.789, -0.0625}) EXPECT_EQ(std::stod(yaml_number(x)), x);

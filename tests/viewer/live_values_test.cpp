@@ -25,6 +25,7 @@ namespace {
 namespace fs = std::filesystem;
 
 using test::device;
+using test::read_all;
 
 const std::string kScene =
     "# a sphere beside a box (comments and spacing must survive a save)\n"
@@ -40,13 +41,6 @@ const std::string kScene =
     "      translate: [1.5, 0, 0]\n";
 
 constexpr int kW = 96, kH = 64;
-
-std::string read_all(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 struct SceneFile {
   fs::path dir = fs::temp_directory_path() / ("sdfc_live_" + std::to_string(::getpid()));
@@ -177,6 +171,27 @@ TEST(LiveValues, SaveChangesOnlyTheEditedNumbersAndUndoRestoresTheFile) {
   EXPECT_EQ(read_all(f.path), kScene + "# edited elsewhere\n");
   EXPECT_EQ(live.save(true), LiveValues::Saved::Written);
   EXPECT_NE(read_all(f.path).find("radius: 1.25"), std::string::npos);
+}
+
+// A checkbox: true/false shapes the code, so it rebuilds; it is saved as the word.
+TEST(LiveValues, BooleansRebuildAndAreSavedAsWords) {
+  SceneFile f;
+  std::ofstream(f.path, std::ios::app) << "render: {dither: false, max_steps: 200}\n";
+  const std::string original = read_all(f.path);
+  SceneSession scene(device(), {f.path.string(), {}, 8});
+  LiveValues live(scene);
+  EXPECT_EQ(live.value("render.dither"), 0);
+  EXPECT_EQ(live.set_bool("render.dither", true), LiveValues::Change::Rebuilding);
+  ASSERT_TRUE(wait_for_build(live)) << scene.error();
+  EXPECT_TRUE(scene.module().plan.march.dither);
+  EXPECT_TRUE(live.changed("render.dither"));
+  ASSERT_EQ(live.save(), LiveValues::Saved::Written);
+  std::string expected = original;
+  expected.replace(expected.find("dither: false") + 8, 5, "true");
+  EXPECT_EQ(read_all(f.path), expected);
+  EXPECT_TRUE(live.undo());
+  ASSERT_EQ(live.save(), LiveValues::Saved::Written);
+  EXPECT_EQ(read_all(f.path), original);
 }
 
 }  // namespace

@@ -26,15 +26,7 @@ scene:
   sphere: {radius: 1}   # the panel's slider
 )";
 
-void key(SDL_Keycode k, Uint16 mod = KMOD_NONE) {
-  SDL_Event e{};
-  e.type = SDL_KEYDOWN;
-  e.key.keysym.sym = k;
-  e.key.keysym.mod = mod;
-  e.key.state = SDL_PRESSED;
-  ASSERT_EQ(SDL_PushEvent(&e), 1) << SDL_GetError();
-}
-
+using test::key;
 using test::step_until;
 
 TEST(Panel, LiveChangesUndoAndTheIdleBake) {

@@ -28,6 +28,8 @@ namespace fs = std::filesystem;
 
 using test::device;
 using test::step_until;
+using test::read_png;
+constexpr auto press = [](SDL_Keycode k) { test::key(k); };
 
 // The same kernel `sdfc render` builds, rendered offline at `camera`.
 std::vector<std::uint8_t> offline_render(const std::string& path, const ir::Camera& camera, int w, int h) {
@@ -51,23 +53,6 @@ double offline_mean_steps(const std::string& path, const ir::Camera& camera, int
   double sum = 0;
   for (float s : img.plane(img.plane_index("steps"))) sum += s;
   return sum / double(img.plane_size());
-}
-
-std::vector<std::uint8_t> read_png(const std::string& path, int& w, int& h) {
-  int channels = 0;
-  stbi_uc* px = stbi_load(path.c_str(), &w, &h, &channels, 3);
-  if (!px) return {};
-  std::vector<std::uint8_t> v(px, px + std::size_t(w) * h * 3);
-  stbi_image_free(px);
-  return v;
-}
-
-void press(SDL_Keycode key) {
-  SDL_Event e{};
-  e.type = SDL_KEYDOWN;
-  e.key.keysym.sym = key;
-  e.key.state = SDL_PRESSED;
-  ASSERT_EQ(SDL_PushEvent(&e), 1) << SDL_GetError();
 }
 
 void write_file(const fs::path& p, const std::string& text) {

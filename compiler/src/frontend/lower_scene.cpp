@@ -13,6 +13,7 @@
 #include "too_small.hpp"
 #include "scene_name.hpp"
 #include "read_camera.hpp"
+#include "sdfc/frontend/bookmarks.hpp"
 #include "read_effects.hpp"
 #include "read_orbit_trap.hpp"
 #include "read_transport.hpp"
@@ -220,7 +221,8 @@ ir::Module lower_scene(const SourceValue& doc, const std::string& source_name) {
     sink.error(doc.loc, "a scene file is a map of sections (camera, render, lights, materials, scene), got " + doc.kind_name(), "");
     sink.throw_if_any();
   }
-  MapReader top(r, doc, "the scene file", {"camera", "render", "background", "lights", "materials", "effects", "scene"});
+  MapReader top(r, doc, "the scene file", {"camera", "render", "background", "lights", "materials", "effects", "scene",
+                                                  "bookmarks"});
 
   ir::RenderPlan& plan = m.plan;
   ir::MaterialDef builtin;  // the default material: the MaterialDef defaults
@@ -231,6 +233,8 @@ ir::Module lower_scene(const SourceValue& doc, const std::string& source_name) {
   if (auto* v = top.get("background")) read_background(r, *v, plan.background);
   if (auto* v = top.get("materials")) read_materials(r, *v, plan);
   if (auto* v = top.get("effects")) frontend::read_effects(r, *v, plan.effects);
+  std::vector<frontend::Bookmark> bookmarks;  // the viewer's; checked here, read there (bookmarks_of)
+  if (auto* v = top.get("bookmarks")) frontend::read_bookmarks(r, *v, bookmarks);
   if (auto* v = top.get("lights")) {
     read_lights(r, *v, plan);
   } else if (!plan.background.sky.enabled) {  // a sky brings its sun instead

@@ -14,7 +14,8 @@ namespace {
 
 double dot(const Vec3d& a, const Vec3d& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
-// A view direction must exist and must not run along the up vector.
+}  // namespace
+
 void check_view(ValueReader& r, const SourceLoc& loc, const SourceLoc& up_loc, const Vec3d& position, const Vec3d& target,
                 const Vec3d& up, const std::string& what) {
   Vec3d f{target[0] - position[0], target[1] - position[1], target[2] - position[2]};
@@ -27,6 +28,8 @@ void check_view(ValueReader& r, const SourceLoc& loc, const SourceLoc& up_loc, c
     r.sink().error(up_loc, what + ": up is parallel to the view direction",
                    "choose an up vector across the view, e.g. [0, 0, 1] for a camera looking along y");
 }
+
+namespace {
 
 void read_camera_path(ValueReader& r, const SourceValue& v, ir::Camera& cam, const SourceLoc& up_loc) {
   MapReader m(r, v, "camera.path", {"keys", "interpolation"});

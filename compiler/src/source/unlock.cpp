@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cstdlib>
 
+#include "sdfc/kinds/param_range.hpp"
+
 namespace sdfc {
 
 namespace {
@@ -49,6 +51,16 @@ bool parse_double(const std::string& s, double* out) {
   return !s.empty() && end == s.c_str() + s.size();
 }
 
+// No range asked for: a described kind's parameter spans its documented range.
+void documented_range(UnlockSlot& s, const SourceValue& v) {
+  const kinds::ParamDoc* doc = kinds::documented_param(steps(s.path));
+  std::optional<kinds::DocRange> r = doc ? kinds::parse_doc_range(doc->range) : std::nullopt;
+  double x = 0;
+  if (!r || !parse_double(v.scalar, &x)) return;
+  std::tie(s.lo, s.hi) = kinds::slider_range(*r, x);
+  s.ranged = true;
+}
+
 SourceLoc where(const std::string& text) { return SourceLoc(std::make_shared<const std::string>("--unlock " + text), 0, 0); }
 
 }  // namespace
@@ -86,6 +98,7 @@ UnlockSlots mark_unlocked(SourceValue& root, const std::vector<UnlockRequest>& r
     s->index = static_cast<int>(slots.size());
     s->path = rq.path;
     if (rq.range) s->ranged = true, s->lo = rq.range->first, s->hi = rq.range->second;
+    else documented_range(*s, *v);
     v->unlock = s;
     slots.push_back(s);
   }

@@ -43,11 +43,9 @@ struct Span {
 }  // namespace
 
 std::string yaml_number(double x) {
-  for (int digits = 1; digits <= 17; ++digits) {
-    std::string s = fmt::format("{:.{}g}", x, digits);
-    if (std::strtod(s.c_str(), nullptr) == x) return s;
-  }
-  return fmt::format("{:.17g}", x);
+  // fmt's shortest text that reads back exactly, without an exponent where
+  // the plain form is as short ("40", not "4e+01").
+  return fmt::format("{}", x);
 }
 
 std::string rewrite_values(const std::string& text, const SourceValue& root, const std::vector<ValueEdit>& edits) {

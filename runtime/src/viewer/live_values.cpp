@@ -7,6 +7,7 @@
 
 #include "sdfc/compile.hpp"
 #include "sdfc/source/write_back.hpp"
+#include "sdfc/source/write_section.hpp"
 #include "sdfc/source/yaml_loader.hpp"
 #include "sdfc/support/diagnostics.hpp"
 
@@ -38,7 +39,13 @@ LiveValues::LiveValues(SceneSession& scene)
 
 double LiveValues::file_value(const std::string& path) const {
   const SourceValue* v = find_value(root_, path);
+  if (v && v->is_scalar() && (v->scalar == "true" || v->scalar == "false")) return v->scalar == "true";
   return v && v->is_scalar() ? std::strtod(v->scalar.c_str(), nullptr) : 0.0;
+}
+
+std::string LiveValues::text_of(const std::string& path, double v) const {
+  if (bools_.count(path)) return v != 0 ? "true" : "false";
+  return yaml_number(v);
 }
 
 double LiveValues::value(const std::string& path) const {
@@ -52,9 +59,16 @@ bool LiveValues::changed(const std::string& path) const {
   return it != edits_.end() && file_value(it->first) != it->second;
 }
 
+bool LiveValues::changed_under(const std::string& path) const {
+  const std::string prefix = dotted_path(path) + ".";
+  for (auto it = edits_.lower_bound(prefix); it != edits_.end() && it->first.compare(0, prefix.size(), prefix) == 0; ++it)
+    if (changed(it->first)) return true;
+  return false;
+}
+
 std::vector<std::string> LiveValues::overrides() const {
   std::vector<std::string> out = base_sets_;
-  for (const auto& [p, v] : edits_) out.push_back(p + "=" + yaml_number(v));
+  for (const auto& [p, v] : edits_) out.push_back(p + "=" + text_of(p, v));
   return out;
 }
 
@@ -106,7 +120,7 @@ LiveValues::Change LiveValues::apply(const std::string& path, double value) {
     }
   const bool pending = std::find(unlocked_.begin(), unlocked_.end(), path) != unlocked_.end() && scene_.building();
   if (pending) return Change::Unlocking;  // poll() gives the new slot this value
-  if (unlockable(path)) {
+  if (!bools_.count(path) && unlockable(path)) {
     if (std::find(unlocked_.begin(), unlocked_.end(), path) == unlocked_.end()) unlocked_.push_back(path);
     scene_.rebuild_in_background(options_with(unlocked_));
     return Change::Unlocking;
@@ -124,6 +138,11 @@ LiveValues::Change LiveValues::set(const std::string& path, double v) {
     done_.push_back({p, before, v});
   undone_.clear();
   return apply(p, v);
+}
+
+LiveValues::Change LiveValues::set_bool(const std::string& path, bool v) {
+  bools_.insert(dotted_path(path));
+  return set(path, v ? 1 : 0);
 }
 
 ReloadResult LiveValues::poll() {
@@ -163,14 +182,27 @@ LiveValues::Saved LiveValues::save(bool overwrite) {
   const std::string& path = scene_.options().path;
   std::vector<ValueEdit> edits;
   for (const auto& [p, v] : edits_)
-    if (changed(p)) edits.push_back({p, yaml_number(v)});
+    if (changed(p)) edits.push_back({p, text_of(p, v)});
   if (edits.empty()) return Saved::NothingToSave;
   const std::string text = rewrite_values(text_, load_yaml_text(text_, path), edits);
   if (!save_if_unchanged(path, overwrite ? read_all(path) : text_, text)) return Saved::ChangedOnDisk;
-  text_ = text;
-  root_ = load_yaml_text(text_, path);
-  scene_.note_own_save();
+  adopt_text(text);
   return Saved::Written;
+}
+
+LiveValues::Saved LiveValues::save_section(const std::string& key, const std::string& block) {
+  const std::string& path = scene_.options().path;
+  const std::string text = replace_section(text_, root_, key, block);
+  if (text == text_) return Saved::NothingToSave;
+  if (!save_if_unchanged(path, text_, text)) return Saved::ChangedOnDisk;
+  adopt_text(text);
+  return Saved::Written;
+}
+
+void LiveValues::adopt_text(std::string text) {
+  text_ = std::move(text);
+  root_ = load_yaml_text(text_, scene_.options().path);
+  scene_.note_own_save();
 }
 
 }  // namespace sdfc::viewer

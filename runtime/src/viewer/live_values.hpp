@@ -11,6 +11,7 @@
 #include <chrono>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -26,8 +27,11 @@ class LiveValues {
   enum class Change { Frame, Unlocking, Rebuilding };
   // Sets the number at `path` ("lights[0].point.intensity" or "lights.0.point.intensity").
   Change set(const std::string& path, double value);
-  double value(const std::string& path) const;  // the edited value, or the file's
+  // A true/false value (a checkbox): kept as 1 / 0, written as the word. It shapes the code, so it rebuilds.
+  Change set_bool(const std::string& path, bool value);
+  double value(const std::string& path) const;  // the edited value, or the file's (true: 1, false: 0)
   bool changed(const std::string& path) const;  // differs from the file
+  bool changed_under(const std::string& path) const;  // a value below `path` (a node) differs from the file
   // Background build with every edited value baked; the unlocked slots go.
   void bake();
   bool unlocked_now() const { return !scene_.slots().empty(); }
@@ -46,6 +50,10 @@ class LiveValues {
   // changed on disk since it was read is kept unless `overwrite`.
   Saved save(bool overwrite = false);
 
+  // Writes a whole top-level section (the bookmarks) into the file at once,
+  // on the same terms as save(); the edited values stay edits.
+  Saved save_section(const std::string& key, const std::string& block);
+
   // The --set overrides of the edits (for a build; also what the panel shows).
   std::vector<std::string> overrides() const;
   // The file as last read or saved, parsed (the panel's tree).
@@ -61,12 +69,15 @@ class LiveValues {
   Change apply(const std::string& path, double value);
   SceneOptions options_with(const std::vector<std::string>& unlock) const;
   double file_value(const std::string& path) const;
+  std::string text_of(const std::string& path, double v) const;  // as the file and --set write it
+  void adopt_text(std::string text);
 
   SceneSession& scene_;
   std::vector<std::string> base_sets_;  // the command line's --set
   std::string text_;                    // the file as read (or last saved)
   SourceValue root_;                    // text_ parsed
   std::map<std::string, double> edits_;
+  std::set<std::string> bools_;  // edited paths that hold true/false
   // Asked once per path: whether it unlocks, and the range it needs when the
   // default one is refused by the value's own checks (a Mandelbox scale).
   std::map<std::string, std::optional<std::optional<std::pair<double, double>>>> can_unlock_;

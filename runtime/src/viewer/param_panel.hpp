@@ -1,12 +1,16 @@
 #pragma once
 // The F2 parameter panel (Dear ImGui over the SDL renderer): the scene file
-// as a tree of its YAML keys with their lines, numbers as sliders (the range
-// an unlocked value was built for) or drag fields, colours as colour pickers;
-// changed values in yellow. Changes go to LiveValues; after a few idle
-// seconds the panel bakes the values into a fresh kernel.
+// in sections (the scene tree; camera with the current view, bookmarks and
+// the hi-res render; lights; materials; effects with render and background;
+// anything else), each a tree of its YAML keys with their lines. Numbers
+// are sliders (the range an unlocked value was built for) or drag fields,
+// three numbers one row, colours colour pickers, true/false checkboxes;
+// changed values in yellow. Changes go to LiveValues; after a few idle seconds the panel
+// bakes the values into a fresh kernel.
 #include <string>
 
 #include "viewer/live_values.hpp"
+#include "viewer/view_tools.hpp"
 
 struct SDL_Window;
 struct SDL_Renderer;
@@ -16,7 +20,7 @@ namespace sdfc::viewer {
 
 class ParamPanel {
  public:
-  ParamPanel(SDL_Window* window, SDL_Renderer* renderer, LiveValues& live, SceneSession& scene);
+  ParamPanel(SDL_Window* window, SDL_Renderer* renderer, LiveValues& live, SceneSession& scene, ViewTools& tools);
   ~ParamPanel();
   ParamPanel(const ParamPanel&) = delete;
   ParamPanel& operator=(const ParamPanel&) = delete;
@@ -34,17 +38,26 @@ class ParamPanel {
   const std::string& status() const { return status_; }
 
  private:
+  void sections();
+  void entry(const std::string& label, const std::string& path, const SourceValue& v);
   void tree(const SourceValue& v, const std::string& path);
+  void checkbox(const std::string& label, const std::string& path);
   void number(const std::string& label, const std::string& path, const SourceValue& v);
-  void colour(const std::string& label, const std::string& path);
+  void triple(const std::string& label, const std::string& path, bool colour);
   void touched(LiveValues::Change c);
 
   LiveValues& live_;
   SceneSession& scene_;
+  ViewTools& tools_;
   bool changed_ = false;
   bool confirm_overwrite_ = false;
   std::string status_;
 };
+
+// The camera section's own part: the view now, the bookmarks (a button
+// recalls one) and the hi-res render's size, samples and progress.
+// True when the view moved.
+bool draw_view_tools(ViewTools& tools);
 
 // Seconds of no change before the unlocked kernel is re-specialised.
 inline constexpr double kIdleBakeSeconds = 3;

@@ -182,6 +182,14 @@ std::optional<sdfrt::FloatImage> SceneSession::render_interruptible(const ir::Ca
   }
 }
 
+sdfrt::FloatImage SceneSession::render_offline(const ir::Camera& camera, int width, int height,
+                                               const std::function<void(int, int)>& progress, std::atomic<bool>* cancel) {
+  sdfrt::RenderOptions opt;
+  opt.progress = progress;
+  opt.cancel = cancel;
+  return renderer_->render(frame_for(camera, width, height, 0.0, 0, 0), width, height, opt);
+}
+
 void offset_frame_rays(std::vector<float>& frame, int width, int height, double dx, double dy) {
   // The kernel's ray is forward + right*u + up*v with u = 2x/w - 1 and
   // v = 1 - 2y/h; a shift of (dx, dy) pixels adds right*2dx/w - up*2dy/h.

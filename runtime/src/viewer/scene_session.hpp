@@ -6,6 +6,7 @@
 #include <sdfrt/float_image.hpp>
 #include <sdfrt/renderer.hpp>
 
+#include <atomic>
 #include <functional>
 #include <future>
 #include <memory>
@@ -82,6 +83,10 @@ class SceneSession {
                                                         double time, double offset_x, double offset_y,
                                                         const std::function<bool()>& interrupt,
                                                         sdfrt::RenderStats* stats = nullptr, int pass = 0);
+  // A picture for a file (the hi-res key): progress(done, total) per tile;
+  // `cancel` is checked before every launch (then sdfrt::Cancelled is thrown).
+  sdfrt::FloatImage render_offline(const ir::Camera& camera, int width, int height,
+                                   const std::function<void(int, int)>& progress, std::atomic<bool>* cancel);
 
  private:
   struct Stamp {

@@ -51,12 +51,24 @@ void SdlWindow::show(const std::uint8_t* rgb, int w, int h, const std::vector<st
   present_again();
 }
 
-void SdlWindow::present_again() {
+void SdlWindow::compose() {
   SDL_RenderClear(renderer_);
   if (texture_) SDL_RenderCopy(renderer_, texture_, nullptr, nullptr);
   draw_overlay(renderer_, overlay_);
   if (before_present_) before_present_();
+}
+
+void SdlWindow::present_again() {
+  compose();
   SDL_RenderPresent(renderer_);
+}
+
+std::vector<std::uint8_t> SdlWindow::capture() {
+  compose();  // read before the present: afterwards the back buffer is undefined
+  std::vector<std::uint8_t> rgb(std::size_t(width_) * height_ * 3);
+  if (SDL_RenderReadPixels(renderer_, nullptr, SDL_PIXELFORMAT_RGB24, rgb.data(), width_ * 3) != 0) fail("cannot read the window");
+  SDL_RenderPresent(renderer_);
+  return rgb;
 }
 
 std::string SdlWindow::driver() const {

@@ -25,6 +25,9 @@ class SdlWindow {
   void show(const std::uint8_t* rgb, int w, int h, const std::vector<std::string>& overlay = {});
   // Shows the last image again (the panel changed, the picture did not).
   void present_again();
+  // Presents again and returns what the window shows (picture, overlay and
+  // panel) as 8-bit RGB rows, width() x height(): `--events`' snap.
+  std::vector<std::uint8_t> capture();
   // Drawn over the picture before every present (the parameter panel).
   void set_before_present(std::function<void()> draw) { before_present_ = std::move(draw); }
   SDL_Window* sdl_window() const noexcept { return window_; }
@@ -47,6 +50,7 @@ class SdlWindow {
   std::string title_;
   std::vector<std::string> overlay_;
   std::function<void()> before_present_;
+  void compose();
 };
 
 }  // namespace sdfc::viewer

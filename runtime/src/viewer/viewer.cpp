@@ -36,19 +36,16 @@ double mean_steps(const sdfrt::FloatImage& img) {
 
 Viewer::Viewer(SceneSession& scene, SdlWindow& window, ViewerOptions options)
     : scene_(scene), window_(window), opt_(std::move(options)), rig_(codegen::fitted(scene.module().plan.camera, opt_.width, opt_.height)),
-      governor_(opt_.frame_budget_ms), live_(scene) {
+      governor_(opt_.frame_budget_ms), live_(scene), tools_(scene, live_, rig_, scene.renderer().device().info().id) {
   last_tick_ = SDL_GetPerformanceCounter();
   update_title();
 }
 
-void Viewer::run() {
-  while (step()) {
-  }
-}
+void Viewer::run() { while (step()) continue; }
 
 void Viewer::toggle_panel() {
   if (!panel_) {
-    panel_ = std::make_unique<ParamPanel>(window_.sdl_window(), window_.sdl_renderer(), live_, scene_);
+    panel_ = std::make_unique<ParamPanel>(window_.sdl_window(), window_.sdl_renderer(), live_, scene_, tools_);
     window_.set_before_present([this] { if (panel_shown_) panel_->draw(); });
   }
   panel_shown_ = !panel_shown_;
@@ -57,6 +54,7 @@ void Viewer::toggle_panel() {
 
 void Viewer::handle_event(const SDL_Event& e) {
   if (panel_shown_ && panel_->handle(e)) return;
+  if (e.type == SDL_KEYDOWN && !e.key.repeat && tools_.key(e.key.keysym.sym, e.key.keysym.mod, &moved_)) return;
   switch (e.type) {
     case SDL_QUIT:
       quit_ = true;

@@ -18,6 +18,7 @@
 #include "viewer/sample_accumulator.hpp"
 #include "viewer/scene_session.hpp"
 #include "viewer/sdl_window.hpp"
+#include "viewer/view_tools.hpp"
 
 union SDL_Event;
 
@@ -53,6 +54,8 @@ class Viewer {
   void toggle_panel();
   bool panel_shown() const noexcept { return panel_shown_; }
   LiveValues& live_values() noexcept { return live_; }
+  // Bookmarks (1-9, Shift+1-9) and the hi-res render (H).
+  ViewTools& tools() noexcept { return tools_; }
   // One pass of the loop: events, held keys, file poll, at most one render,
   // present. Returns false once asked to quit.
   bool step();
@@ -104,6 +107,7 @@ class Viewer {
   std::vector<std::uint8_t> shown_;
   int shown_w_ = 0, shown_h_ = 0;
   LiveValues live_;
+  ViewTools tools_;
   std::unique_ptr<ParamPanel> panel_;  // made on the first F2
   bool panel_shown_ = false;
 };
