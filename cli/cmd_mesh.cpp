@@ -99,7 +99,7 @@ int run_mesh(const MeshArgs& a) {
   const int width = a.simd_width > 0 ? a.simd_width : default_simd_width(device.info().type == sdfrt::DeviceType::Cpu);
   codegen::EmittedKernel k = codegen::emit_mesh_kernels(m, width);
   sdfrt::BuildStats bs;
-  sdfrt::mesh::Sampler sampler(device, k.source, width, &bs);
+  sdfrt::mesh::Sampler sampler(device, k.source, width, &bs, k.scene_data);
   if (!a.quiet)
     std::cerr << fmt::format("device: {}; kernel built in {:.0f} ms{}; grid {}x{}x{} voxels of {:.4g}\n",
                              device.info().device_name, bs.build_ms, bs.cache_hit ? " (cached)" : "", base.dims[0],

@@ -80,7 +80,7 @@ TEST(Cli, CompileShowsEveryStage) {
   Result ir = sdfc("compile examples/mandelbulb.yaml --emit ir");
   EXPECT_NE(ir.out.find("= mandelbulb power=8 iterations=10 bailout=2"), std::string::npos) << ir.out;
   Result all = sdfc("compile examples/mandelbulb.yaml --emit ir --dump-after all");
-  for (const char* pass : {"lower", "verify", "fold_constants", "canonicalise", "cse", "eliminate_dead", "infer_properties", "analyse", "insert_bounding_volumes"})
+  for (const char* pass : {"lower", "verify", "fold_constants", "canonicalise", "cse", "eliminate_dead", "infer_properties", "analyse", "insert_bounding_volumes", "gather_object_sets"})
     EXPECT_NE(all.out.find(std::string("// ---- IR after ") + pass + " "), std::string::npos) << pass;
   Result cl = sdfc("compile examples/mandelbulb.yaml --emit cl --simd-width 1");
   EXPECT_NE(cl.out.find("__kernel void sdfc_render("), std::string::npos);

@@ -177,7 +177,7 @@ TEST(Pipeline, EveryPassIsObserved) {
                        [&](std::string_view name, const ir::Module&) { seen.emplace_back(name); });
   ASSERT_EQ(seen.size(), passes::pipeline().size());
   EXPECT_EQ(seen.front(), "verify");
-  EXPECT_EQ(seen.back(), "insert_bounding_volumes");
+  EXPECT_EQ(seen.back(), "gather_object_sets");
 }
 
 }  // namespace

@@ -93,6 +93,11 @@ ProbeResult Probe::run(const std::vector<V3>& points, double time) {
   cl_mem args[6] = {in.x.get(), in.y.get(), in.z.get(), bd.get(), bdm.get(), bm.get()};
   for (unsigned i = 0; i < 6; ++i) kernel_->set_arg(i, args[i]);
   kernel_->set_arg(6, static_cast<float>(time));
+  sdfrt::BufferHandle data;  // object sets: their numbers are the probe's last argument
+  if (!emitted_.scene_data.empty()) {
+    data = make_buffer(ctx, CL_MEM_READ_ONLY, emitted_.scene_data.size(), emitted_.scene_data.data());
+    kernel_->set_arg(7, data.get());
+  }
   size_t global = padded / w;
   check(clEnqueueNDRangeKernel(q, kernel_->get(), 1, nullptr, &global, nullptr, 0, nullptr, nullptr),
         "clEnqueueNDRangeKernel(sdfc_probe)");
@@ -125,6 +130,11 @@ std::vector<std::array<float, 6>> Probe::run_material(const std::vector<V3>& poi
   cl_int planes = static_cast<cl_int>(padded);
   kernel.set_arg(4, planes);
   kernel.set_arg(5, 0.0f);  // probe_time: the material probes run static scenes
+  sdfrt::BufferHandle data;
+  if (!emitted_.scene_data.empty()) {
+    data = make_buffer(ctx, CL_MEM_READ_ONLY, emitted_.scene_data.size(), emitted_.scene_data.data());
+    kernel.set_arg(6, data.get());
+  }
   size_t global = padded / w;
   check(clEnqueueNDRangeKernel(q, kernel.get(), 1, nullptr, &global, nullptr, 0, nullptr, nullptr),
         "clEnqueueNDRangeKernel(sdfc_probe_material)");

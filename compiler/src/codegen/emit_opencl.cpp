@@ -16,6 +16,7 @@
 #include "prelude.hpp"
 #include "gradient_emitter.hpp"
 #include "kernel_text.hpp"
+#include "object_set_emitter.hpp"
 #include "scene_emitter.hpp"
 #include "sdfc/codegen/kernel_abi.hpp"
 #include "sdfc/codegen/stdlib_manifest.hpp"
@@ -95,8 +96,15 @@ EmittedKernel emit_opencl(const ir::Module& m, const EmitOptions& opt) {
   std::string kernel = path ? detail::path_functions(m, detail::with_trap_ranges(m), lit, used) + "\n"
                             : detail::segment_function(m, lit, used) + "\n" + detail::radiance_function(m, used) + "\n";
   kernel += detail::render_kernel(m, lit, used, opt);
-  if (opt.probe_kernel) kernel += "\n" + probe_kernel(facts.uses_time);
-  if (opt.probe_kernel && facts.material_blend) kernel += "\n" + probe_material_kernel(facts.uses_time, facts.coloring_geometry);
+  // With object sets the probes take the scene data as their last argument.
+  const bool data = detail::has_object_sets(m);
+  auto with_data = [&](std::string probe) {
+    if (data) probe.replace(probe.find(")\n{"), 2, ", __global const float* scene_data)");
+    return probe;
+  };
+  if (opt.probe_kernel) kernel += "\n" + with_data(probe_kernel(facts.uses_time));
+  if (opt.probe_kernel && facts.material_blend)
+    kernel += "\n" + with_data(probe_material_kernel(facts.uses_time, facts.coloring_geometry));
 
   // a normal for the mesh colour and the material probe, which have none of their own
   if (facts.coloring_geometry) used.insert("normal_central");
@@ -108,6 +116,7 @@ EmittedKernel emit_opencl(const ir::Module& m, const EmitOptions& opt) {
   k.planes.assign(abi::kImagePlanes.begin(), abi::kImagePlanes.end());
   if (opt.aovs) k.planes.insert(k.planes.end(), abi::kAovPlanes.begin(), abi::kAovPlanes.end());
   k.frame_floats = abi::kFrameFloats + m.unlocked;
+  k.scene_data = detail::scene_data(m);
   std::string before, after;
   for (const auto* f : fns) {
     k.stdlib_functions.push_back(f->name);
@@ -122,6 +131,7 @@ EmittedKernel emit_opencl(const ir::Module& m, const EmitOptions& opt) {
   src += "// stdlib functions:";
   for (const auto& n : k.stdlib_functions) src += " " + n;
   src += "\n\n" + detail::prelude(wd, rows, m.plan.march.precision, facts.uses_time, m.unlocked);
+  if (!k.scene_data.empty()) src += detail::scene_data_macros(facts.uses_time, m.unlocked);
   src += "\n// ---- stdlib ----" + before + trap_shapes + "\n";
   src += scene + "\n";
   if (!after.empty()) src += "// ---- stdlib that calls the scene ----" + after + "\n";

@@ -100,7 +100,8 @@ EmittedKernel emit_mesh_kernels(const ir::Module& m, int simd_width) {
   }
   std::string entries = std::string(kClippedDistance) + colour_kernel(albedo);
   replace_all(entries, "TIME_FROM_GRID",
-              m.analyses.uses_time ? "const scalar time = (scalar)g[10];" : "(void)g[10];");
+              std::string(m.analyses.uses_time ? "const scalar time = (scalar)g[10];" : "(void)g[10];") +
+                  (k.scene_data.empty() ? "" : "\n    __global const float* scene_data = g + 12;  // the object sets' numbers"));
   k.source += entries;
   k.entry = "sdfc_mesh_blocks";
   return k;

@@ -9,6 +9,7 @@
 #include <set>
 
 #include "entry_emitters.hpp"
+#include "object_set_emitter.hpp"
 #include "sdfc/codegen/kernel_abi.hpp"
 
 namespace sdfc::codegen::detail {
@@ -41,6 +42,8 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
   if (m.analyses.uses_time || m.unlocked > 0)
     w.line(fmt::format("const scalar time = (scalar)frame[{}];  // the scene is animated", abi::kTime));
   if (m.unlocked > 0) w.line(fmt::format("__global const float* unlocked = frame + {};  // the unlocked values", abi::kFrameFloats));
+  if (has_object_sets(m))
+    w.line(fmt::format("__global const float* scene_data = frame + {};  // the object sets' numbers", abi::kFrameFloats + m.unlocked));
   w.line(aovs ? "real depth, mat, steps, iterations;" : "real depth, mat, steps;");
   w.line("vec3 normal;");
   std::string post;  // per-sample exposure and tone curve

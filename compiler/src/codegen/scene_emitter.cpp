@@ -13,6 +13,7 @@
 #include "kind_call.hpp"
 #include "fractal_emitter.hpp"
 #include "kernel_text.hpp"
+#include "object_set_emitter.hpp"
 #include "trap_shape_emitter.hpp"
 #include "sdfc/expr/expr.hpp"
 #include "sdfc/ir/analyses.hpp"
@@ -47,6 +48,7 @@ class SceneEmitter {
   SceneEmitter(const ir::Module& m, const Literals& lit, bool with_mat, std::set<std::string>& used, bool trap = false,
                bool blend = false, bool iterations = false)
       : g_(*m.graph),
+        module_(m),
         plan_(m.plan),
         lit_(lit),
         with_mat_(with_mat || trap || blend || iterations),
@@ -248,6 +250,14 @@ class SceneEmitter {
         std::string m = var("m");
         w_.line(fmt::format("real {} = SEL({}, {}, {} != 0.0f);  // {}", m, id, c.mat, c.mat, describe(n)));
         return {c.d, m};
+      }
+      case Kind::ObjectSet: {  // a large union held as data (object_set_emitter.cpp)
+        ObjectSetCode c = emit_object_set(n, p, where(n), w_, used_);
+        if (trap_) return {c.d, lit_.typed(0)};  // no fractal inside: no trap
+        if (!blend_) return {c.d, with_mat_ ? c.mat : ""};
+        std::string id = var("m");  // items without a material of their own show the one above the set
+        w_.line(fmt::format("real {} = SEL({}, {}, {} != 0.0f);", id, lit_.typed(cur_mat_), c.mat, c.mat));
+        return {c.d, id, object_set_record(id, module_, lit_, w_, used_)};
       }
       // ---- issue 9: domain operations ----
       case Kind::Repeat: return repeat(n, p);
@@ -494,6 +504,7 @@ class SceneEmitter {
   }
 
   const ir::Graph& g_;
+  const ir::Module& module_;
   const ir::RenderPlan& plan_;
   const Literals& lit_;
   bool with_mat_;

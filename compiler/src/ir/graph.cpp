@@ -88,7 +88,8 @@ std::vector<int> Graph::use_counts(NodeId root) const {
 NodeId Builder::make(Kind k, std::vector<double> params, std::vector<NodeId> children, SourceLoc loc,
                      Animation anim) {
   const KindInfo& ki = info(k);
-  if (ki.params.size() != params.size())
+  // An object set's named parameters are a header; its data follows (sdfc/ir/object_set.hpp).
+  if (k == Kind::ObjectSet ? params.size() < ki.params.size() : ki.params.size() != params.size())
     throw std::logic_error("IR: wrong parameter count for " + std::string(ki.name));
   // The key is the raw bytes of kind, params and children. -0.0 is folded to
   // 0.0 so the two spellings of zero share a node.

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <unordered_map>
 
@@ -41,7 +42,9 @@ std::string print(const Module& m, const PrintOptions& opt) {
     const Node& node = g.node(id);
     const KindInfo& ki = info(node.kind);
     std::string line = fmt::format("%{} = {}", n, ki.name);
-    for (size_t i = 0; i < node.params.size(); ++i) {
+    // An object set prints its header (offset, counts), not its data.
+    const size_t shown = std::min(node.params.size(), ki.params.size());
+    for (size_t i = 0; i < shown; ++i) {
       if (const auto& e = node.animation(i)) line += fmt::format(" {}=\"{}\"", ki.params[i], expr::to_string(e));
       else line += fmt::format(" {}={}", ki.params[i], num(node.params[i]));
     }

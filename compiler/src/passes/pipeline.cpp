@@ -15,6 +15,7 @@ const std::vector<PassInfo>& pipeline() {
       {"infer_properties", infer_properties},
       {"analyse", analyse},
       {"insert_bounding_volumes", insert_bounding_volumes},
+      {"gather_object_sets", gather_object_sets},
   };
   return list;
 }

@@ -9,6 +9,7 @@
 #include "sdfc/kinds/registry.hpp"
 #include "domain.hpp"
 #include "materials.hpp"
+#include "object_set.hpp"
 
 namespace sdfc::reference {
 
@@ -62,6 +63,7 @@ Sample evaluate_node(const ir::Graph& g, ir::NodeId id, const Vec3& p) {
   const auto& q = n.params;
   if (const kinds::Description* d = kinds::find(n.kind)) return {d->distance(n, p), 0};
   if (auto d = detail::domain_evaluate(g, n, p)) return *d;
+  if (n.kind == Kind::ObjectSet) return detail::object_set_evaluate(n, p);
   switch (n.kind) {
     case Kind::StepFactor: {
       Sample s = evaluate(g, n.children[0], p);

@@ -31,6 +31,9 @@ struct KernelSpec {
   int packet_rows = 1;              // pixel rows per packet; divides simd_width
   std::vector<std::string> planes;  // e.g. {"r","g","b","depth"}
   std::string build_options;
+  // Numbers the kernel reads after the frame block it is given (the
+  // compiler's object sets): uploaded with the first frame, behind it.
+  std::vector<float> scene_data = {};
 };
 
 struct RenderOptions {
@@ -91,6 +94,7 @@ class Renderer {
   std::size_t out_buffer_floats_ = 0;
   BufferHandle frame_buffer_;
   std::size_t frame_buffer_floats_ = 0;
+  std::size_t frame_head_floats_ = 0;  // the frame block's part of it; spec_.scene_data follows
   RenderStats last_stats_;
 };
 

@@ -35,13 +35,15 @@ void read(Device& d, BufferHandle& b, std::size_t bytes, void* host) {
 
 }  // namespace
 
-Sampler::Sampler(Device& device, const std::string& source, int simd_width, BuildStats* stats)
+Sampler::Sampler(Device& device, const std::string& source, int simd_width, BuildStats* stats,
+                 std::vector<float> scene_data)
     : device_(&device),
       width_(simd_width),
       program_(build_program(device, source, "", stats)),
       points_(program_.kernel("sdfc_mesh_points")),
       blocks_(program_.kernel("sdfc_mesh_blocks")),
-      colour_(program_.kernel("sdfc_mesh_colour")) {
+      colour_(program_.kernel("sdfc_mesh_colour")),
+      scene_data_(std::move(scene_data)) {
   set_grid(GridSpec{});
 }
 
@@ -49,6 +51,7 @@ void Sampler::set_grid(const GridSpec& g) {
   grid_ = {float(g.origin[0]),  float(g.origin[1]),  float(g.origin[2]),  float(g.voxel),
            float(g.clip_lo[0]), float(g.clip_lo[1]), float(g.clip_lo[2]), float(g.clip_hi[0]),
            float(g.clip_hi[1]), float(g.clip_hi[2]), float(g.time), float(g.iso)};
+  grid_.insert(grid_.end(), scene_data_.begin(), scene_data_.end());  // the kernel reads it at g + 12
 }
 
 // planes: 1 (distance) or 3 (colour, which also takes the padded count n).

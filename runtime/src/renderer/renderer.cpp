@@ -64,19 +64,26 @@ void Renderer::ensure_out_buffer(std::size_t floats) {
 
 void Renderer::upload_frame(const std::vector<float>& frame) {
   // An empty frame still needs a valid buffer argument.
-  const std::size_t floats = std::max<std::size_t>(frame.size(), 1);
+  const std::size_t head = std::max<std::size_t>(frame.size(), 1);
+  const std::vector<float>& data = spec_.scene_data;
+  const std::size_t floats = head + data.size();
   cl_int status = CL_SUCCESS;
-  if (!frame_buffer_ || frame_buffer_floats_ != floats) {
+  if (!frame_buffer_ || frame_buffer_floats_ != floats || frame_head_floats_ != head) {
     frame_buffer_.reset();
     frame_buffer_.reset(clCreateBuffer(device_->context(), CL_MEM_READ_ONLY,
                                        floats * sizeof(float), nullptr, &status));
     check_cl(status, "clCreateBuffer(frame parameters)");
     frame_buffer_floats_ = floats;
+    frame_head_floats_ = head;
+    if (!data.empty())  // written once: frames change only the block in front of it
+      check_cl(clEnqueueWriteBuffer(device_->queue(), frame_buffer_.get(), CL_TRUE, head * sizeof(float),
+                                    data.size() * sizeof(float), data.data(), 0, nullptr, nullptr),
+               "clEnqueueWriteBuffer(scene data)");
   }
   const float zero = 0.0f;
   const void* src = frame.empty() ? &zero : frame.data();
   check_cl(clEnqueueWriteBuffer(device_->queue(), frame_buffer_.get(), CL_TRUE, 0,
-                                floats * sizeof(float), src, 0, nullptr, nullptr),
+                                head * sizeof(float), src, 0, nullptr, nullptr),
            "clEnqueueWriteBuffer(frame parameters)");
 }
 

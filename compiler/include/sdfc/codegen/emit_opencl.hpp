@@ -32,6 +32,9 @@ struct EmittedKernel {
   int packet_rows = 1;              // the packet is (simd_width / packet_rows) x packet_rows pixels
   std::vector<std::string> planes;  // output planes, in order
   int frame_floats = 0;             // length of the frame parameter block
+  // Object sets' numbers (sdfc/ir/object_set.hpp): the renderer puts them in
+  // the frame buffer after the frame block and the unlocked values.
+  std::vector<float> scene_data;
   std::vector<std::string> stdlib_functions;  // which stdlib functions it holds
 };
 

@@ -18,6 +18,7 @@ ir::Module infer_properties(ir::Module m);    // bounds, distance class, Lipschi
 ir::Module analyse(ir::Module m);             // what the emitters need: time, blends, traps, ray bounds
 ir::Module insert_bounding_volumes(ir::Module m);  // box tests in front of expensive subtrees
 ir::Module eliminate_dead(ir::Module m);      // unused materials, dark lights
+ir::Module gather_object_sets(ir::Module m);  // large unions of spheres and boxes become data (sdfc/ir/object_set.hpp)
 
 struct PassInfo {
   std::string_view name;

@@ -14,7 +14,9 @@ namespace sdfrt::mesh {
 class Sampler {
  public:
   // Builds `source` (through the binary cache); simd_width is what it was emitted for.
-  Sampler(Device& device, const std::string& source, int simd_width, BuildStats* stats = nullptr);
+  // scene_data: the kernel's object-set numbers (EmittedKernel::scene_data), after the grid block.
+  Sampler(Device& device, const std::string& source, int simd_width, BuildStats* stats = nullptr,
+          std::vector<float> scene_data = {});
   void set_grid(const GridSpec& grid);  // every later call samples on this grid, at its time
 
   // The clipped distance at each point.
@@ -32,6 +34,7 @@ class Sampler {
   Program program_;
   Kernel points_, blocks_, colour_;
   std::vector<float> grid_;
+  std::vector<float> scene_data_;
 };
 
 }  // namespace sdfrt::mesh

@@ -1,0 +1,70 @@
+#pragma once
+// An object set: a large union of spheres and boxes (or of small smooth
+// unions of them) held as data instead of code. The gather_object_sets pass
+// makes one from a union with at least kObjectSetThreshold such children; the
+// kernel walks a bounding-volume hierarchy over it (stdlib/object_set.cl)
+// and reads the numbers from the scene data buffer that follows the frame
+// block, so kernel source and build time stay the same for any count.
+//
+// The node's params: [offset in the scene data buffer, node count, item
+// count, primitive count, then the floats the kernel reads]: the hierarchy's
+// nodes (kNodeFloats each: box lo xyz, hi xyz, first, count; an inner node
+// has count 0, its left child right after it and its right child at
+// `first`; a leaf holds items [first, first + count)), the items
+// (kItemFloats each: first primitive, primitive count, blend radius,
+// material id) and the primitives (kPrimFloats each: type, centre xyz,
+// sphere radius or box half extents xyz, box edge radius).
+#include <cstddef>
+#include <vector>
+
+#include "sdfc/ir/graph.hpp"
+#include "sdfc/ir/render_plan.hpp"
+
+namespace sdfc::ir::object_set {
+
+inline constexpr size_t kObjectSetThreshold = 64;  // fewer children stay code: small scenes keep fully specialised kernels
+inline constexpr size_t kHeader = 4;
+inline constexpr size_t kNodeFloats = 8, kItemFloats = 4, kPrimFloats = 8;
+inline constexpr size_t kLeafItems = 4;  // items per leaf of the hierarchy
+inline constexpr int kMaxDepth = 30;     // the kernel's stack holds 2 entries per level (OS_STACK in the stdlib)
+
+enum PrimType { kSphere = 0, kBox = 1 };
+
+struct Prim {
+  int type = kSphere;
+  Vec3d center{0, 0, 0};
+  Vec3d size{0, 0, 0};  // sphere: radius in size[0]; box: half extents
+  double edge = 0;      // box edge radius
+};
+
+// One child of the union: its primitives, smooth-united by `blend` (0 with
+// one primitive), all of material `material` (0: none inside the set).
+struct Item {
+  std::vector<Prim> prims;
+  double blend = 0;
+  int material = 0;
+};
+
+// The node params (header and floats) for these items, with their hierarchy.
+std::vector<double> pack(std::vector<Item> items, size_t offset);
+
+// Flops of one evaluation where the walk does the most work: the hierarchy's
+// depth plus the most items whose boxes overlap one place (counted on a
+// coarse grid), so piling many objects on one spot cannot dodge the scene's
+// cost cap.
+double worst_cost(const std::vector<Item>& items);
+
+// Reading a packed node back.
+struct View {
+  const std::vector<double>& q;
+  size_t offset() const { return size_t(q[0]); }
+  size_t nodes() const { return size_t(q[1]); }
+  size_t items() const { return size_t(q[2]); }
+  size_t prims() const { return size_t(q[3]); }
+  size_t floats() const { return q.size() - kHeader; }
+  const double* node(size_t i) const { return q.data() + kHeader + i * kNodeFloats; }
+  const double* item(size_t i) const { return q.data() + kHeader + nodes() * kNodeFloats + i * kItemFloats; }
+  const double* prim(size_t i) const { return item(items()) + i * kPrimFloats; }
+};
+
+}  // namespace sdfc::ir::object_set

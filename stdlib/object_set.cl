@@ -1,0 +1,66 @@
+//! fn os_item
+//! deps: vec3_ops, sd_sphere, sd_box, op_smooth_union
+//! class: bound
+// One item of an object set (see the compiler's ir/object_set.hpp for the
+// layout): a sphere or box record, or several smooth-united in order, the
+// same operations the unrolled union would do.
+inline real os_prim(vec3 p, __global const float* r)
+{
+    vec3 q = v3_sub(p, v3((real)r[1], (real)r[2], (real)r[3]));
+    if (r[0] == 0.0f) return sd_sphere(q, (real)r[4]);
+    return sd_box(q, v3((real)r[4], (real)r[5], (real)r[6]), (real)r[7]);
+}
+inline real os_item(vec3 p, __global const float* item, __global const float* prims)
+{
+    __global const float* r = prims + 8 * (int)item[0];
+    const int count = (int)item[1];
+    real d = os_prim(p, r);
+    for (int k = 1; k < count; ++k) d = op_smooth_union(d, os_prim(p, r + 8 * k), (real)item[2]);
+    return d;
+}
+
+//! fn os_union
+//! deps: vec3_ops, os_item
+//! class: bound
+// The nearest item of an object set, and its material: a walk of the
+// bounding-volume hierarchy that skips a node while every lane's nearest
+// item so far is nearer than the node's box. The box's signed distance is a
+// lower bound of every item inside it (the host grows each box by how far
+// its smooth blend reaches), so the result is the exact minimum over all
+// items, as the unrolled union's. Nearer children are visited first.
+#define OS_STACK 64
+inline real os_box(vec3 p, __global const float* b)
+{
+    vec3 q = v3(fmax((real)b[0] - p.x, p.x - (real)b[3]), fmax((real)b[1] - p.y, p.y - (real)b[4]),
+                fmax((real)b[2] - p.z, p.z - (real)b[5]));
+    return v3_length(v3_max_s(q, K(0.0f))) + fmin(v3_max_comp(q), K(0.0f));
+}
+inline real os_union(vec3 p, __global const float* s, const int n_nodes, const int n_items, real* mat)
+{
+    __global const float* items = s + 8 * n_nodes;
+    __global const float* prims = items + 4 * n_items;
+    real best = (real)(1e30f), m = (real)(0.0f);
+    int stack[OS_STACK];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const int node = stack[--top];
+        __global const float* b = s + 8 * node;
+        if (!M_ANY(os_box(p, b) < best)) continue;
+        const int first = (int)b[6], count = (int)b[7];
+        if (count > 0) {
+            for (int i = first; i < first + count; ++i) {
+                real d = os_item(p, items + 4 * i, prims);
+                m = SEL(m, (real)items[4 * i + 3], d < best);
+                best = fmin(best, d);
+            }
+        } else {
+            const int left = node + 1;
+            const bool left_near = M_ANY(os_box(p, s + 8 * left) < os_box(p, s + 8 * first));
+            stack[top++] = left_near ? first : left;  // the far child waits below the near one
+            stack[top++] = left_near ? left : first;
+        }
+    }
+    *mat = m;
+    return best;
+}
