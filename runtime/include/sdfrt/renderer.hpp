@@ -16,6 +16,7 @@
 
 #include <atomic>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -31,6 +32,9 @@ struct KernelSpec {
   int packet_rows = 1;              // pixel rows per packet; divides simd_width
   std::vector<std::string> planes;  // e.g. {"r","g","b","depth"}
   std::string build_options;
+  // An environment map's buffer (background.map): uploaded once, passed as
+  // the kernel's tenth argument `envmap`. Null: the kernel has nine.
+  std::shared_ptr<const std::vector<float>> environment;
 };
 
 struct RenderOptions {
@@ -89,6 +93,7 @@ class Renderer {
   std::optional<Kernel> kernel_;
   BufferHandle out_buffer_;
   std::size_t out_buffer_floats_ = 0;
+  BufferHandle env_buffer_;  // KernelSpec::environment, on the device
   BufferHandle frame_buffer_;
   std::size_t frame_buffer_floats_ = 0;
   RenderStats last_stats_;

@@ -6,6 +6,7 @@
 // Each work-item shades a packet of `simd_width` pixels (a tile of
 // packet_rows rows): the stdlib is written
 // over `real`/`vec3`/`mask`, which the prelude defines per width and precision.
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,9 @@ struct EmittedKernel {
   std::vector<std::string> planes;  // output planes, in order
   int frame_floats = 0;             // length of the frame parameter block
   std::vector<std::string> stdlib_functions;  // which stdlib functions it holds
+  // background.map with the path integrator: the buffer for the kernel's
+  // last argument, `envmap` (ir::EnvironmentMap::data); null without one.
+  std::shared_ptr<const std::vector<float>> environment;
 };
 
 EmittedKernel emit_opencl(const ir::Module& m, const EmitOptions& opt = {});
