@@ -130,6 +130,10 @@ int run_render(RenderArgs a) {
     throw std::invalid_argument(fmt::format("a video needs an even width and height (yuv420p), not {}x{}",
                                             m.plan.march.width, m.plan.march.height));
 
+  if (std::find(a.aovs.begin(), a.aovs.end(), "albedo") != a.aovs.end() &&
+      m.plan.transport.integrator != ir::Transport::Integrator::Path)
+    throw std::invalid_argument("--aov albedo is written by the path integrator; add render.integrator: path to the scene "
+                                "(or --set render.integrator=path)");
   std::signal(SIGABRT, on_driver_abort);
   sdfrt::Device device = sdfrt::open_device(a.device.empty() ? std::nullopt : std::optional<std::string>(a.device));
   bool cpu = device.info().type == sdfrt::DeviceType::Cpu;
@@ -145,7 +149,7 @@ int run_render(RenderArgs a) {
   eo.linear = format == Format::Exr;
   codegen::EmittedKernel k = codegen::emit_opencl(m, eo);
   if (!a.kernel_file.empty()) k.source = read_kernel_file(a.kernel_file);
-  sdfrt::KernelSpec spec{k.source, k.entry, k.simd_width, k.packet_rows, k.planes, "", k.scene_data};
+  sdfrt::KernelSpec spec{k.source, k.entry, k.simd_width, k.packet_rows, k.planes, "", k.scene_data, k.environment};
   // One build serves every frame: time and the camera are frame parameters.
   sdfrt::Renderer renderer(device, spec);
   const auto& bs = renderer.build_stats();
@@ -262,8 +266,9 @@ Action add_render(CLI::App& app) {
                 "image is also refreshed after each pass");
   cmd->add_option("--bit-depth", a->bit_depth, "Bits per channel: PNG 8 (default) or 16; EXR 16 (half, default) or 32 (float)")
       ->check(CLI::IsMember({8, 16, 32}));
-  cmd->add_option("--aov", a->aovs, "Also write these: as channels of an EXR (Z, N.X/N.Y/N.Z, steps, iterations, material, hit), "
-                                    "else as PFM beside the image (OUT.<aov>.pfm): depth, normal, steps, iterations, material, hit")
+  cmd->add_option("--aov", a->aovs, "Also write these: as channels of an EXR (Z, N.X/N.Y/N.Z, steps, iterations, material, hit, "
+                                    "albedo.R/G/B), else as PFM beside the image (OUT.<aov>.pfm): depth, normal, steps, iterations, "
+                                    "material, hit, albedo (the path integrator's first-hit colour, for denoisers)")
       ->delimiter(',')
       ->check(CLI::IsMember(kAovNames));
   cmd->add_option("--frames", a->frames, "Render frames N, FIRST:LAST or FIRST:LAST:STEP at time = frame / fps; "

@@ -16,6 +16,7 @@ namespace {
 // The kernel planes an AOV name stands for.
 std::vector<int> aov_planes(const sdfrt::KernelSpec& spec, const std::string& aov) {
   if (aov == "normal") return {plane_of(spec, "normal_x"), plane_of(spec, "normal_y"), plane_of(spec, "normal_z")};
+  if (aov == "albedo") return {plane_of(spec, "albedo_r"), plane_of(spec, "albedo_g"), plane_of(spec, "albedo_b")};
   return {plane_of(spec, aov)};
 }
 
@@ -124,6 +125,9 @@ std::vector<sdfrt::ExrChannel> exr_channels(const sdfrt::KernelSpec& spec, const
     else if (a == "normal")
       for (const char* axis : {"X", "Y", "Z"})
         c.push_back({fmt::format("N.{}", axis), plane_of(spec, fmt::format("normal_{}", char(axis[0] + 32))), false});
+    else if (a == "albedo")  // a layer as denoisers (OIDN) read it, with N
+      for (const char* ch : {"R", "G", "B"})
+        c.push_back({fmt::format("albedo.{}", ch), plane_of(spec, fmt::format("albedo_{}", char(ch[0] + 32))), half});
     else c.push_back({a, plane_of(spec, a), false});
   }
   return c;

@@ -108,7 +108,7 @@ std::vector<std::string> render_offline(sdfrt::Renderer& renderer, const Offline
   const std::size_t pixels = out.window.full_width > 0 ? std::size_t(out.window.full_width) * std::size_t(out.window.full_height)
                                                      : static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
   const bool aov_planes = spec.planes.size() > 4;
-  const std::size_t sums = SampleMean::floats_per_pixel(aov_planes);
+  const std::size_t sums = SampleMean::floats_per_pixel(aov_planes, spec.planes.size() > abi::kImagePlanes.size() + abi::kAovPlanes.size());
   const bool progressive = f.samples > 1 && pixels * sums * sizeof(float) <= kMaxAccumulatorBytes;
   if (f.samples > 1 && !progressive && !out.quiet)
     std::cerr << fmt::format("note: {}x{} is too large to refine progressively; rendering all {} samples in one pass\n",

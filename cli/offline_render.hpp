@@ -47,7 +47,8 @@ struct OfflineOutput {
 // fraction of samples that hit, 0 or 1 with one sample), depth, normal
 // (normalised) and iterations the means over the samples that hit, steps
 // the mean over all, material that of the first sample that hits.
-inline const std::vector<std::string> kAovNames = {"depth", "normal", "steps", "iterations", "material", "hit"};
+// albedo: the path integrator's first-hit albedo, for denoisers.
+inline const std::vector<std::string> kAovNames = {"depth", "normal", "steps", "iterations", "material", "hit", "albedo"};
 
 // "<dir>/<stem>.<aov>.pfm" beside the beauty image.
 std::string aov_path(const std::string& beauty, const std::string& aov);

@@ -20,7 +20,11 @@ SampleMean::SampleMean(const sdfrt::KernelSpec& spec, int width, int height, flo
   const std::size_t n = std::size_t(w_) * std::size_t(h_);
   Aovs a{plane_of(spec, "depth"), plane_of(spec, "normal_x"), plane_of(spec, "normal_y"),
          plane_of(spec, "normal_z"), plane_of(spec, "steps"), plane_of(spec, "material"),
-         plane_of(spec, "iterations"), plane_of(spec, "hit"), {}, {}, {}, {}, {}, {}};
+         plane_of(spec, "iterations"), plane_of(spec, "hit"), {}, {}, {}, {}, {}, {}, -1, {}};
+  if (std::find(spec.planes.begin(), spec.planes.end(), "albedo_r") != spec.planes.end()) {
+    a.albedo = plane_of(spec, "albedo_r");
+    a.albedo_sum.assign(3 * n, 0.0f);
+  }
   a.hits.assign(n, 0.0f), a.depth_sum.assign(n, 0.0f), a.normal_sum.assign(3 * n, 0.0f), a.steps_sum.assign(n, 0.0f);
   a.iter_sum.assign(n, 0.0f), a.first_material.assign(n, -1.0f);
   aovs_ = std::move(a);
@@ -49,6 +53,8 @@ void SampleMean::add(const sdfrt::FloatImage& band, int y0) {
     a.hits[j] += k;
     if (k > 0) a.depth_sum[j] += k * d[i], a.iter_sum[j] += k * it[i];
     for (int q = 0; q < 3; ++q) a.normal_sum[q * n + j] += k * nrm[q][i];
+    if (a.albedo >= 0)
+      for (int q = 0; q < 3; ++q) a.albedo_sum[q * n + j] += k * band.plane(a.albedo + q)[i];
     a.steps_sum[j] += s[i];
   }
 }
@@ -84,6 +90,8 @@ sdfrt::FloatImage SampleMean::band(int y0, int rows) const {
     const float len = std::sqrt(x * x + y * y + z * z);
     const float s = len > 1e-30f ? 1.0f / len : 0.0f;
     b.plane(a.nx)[i] = x * s, b.plane(a.ny)[i] = y * s, b.plane(a.nz)[i] = z * s;
+    if (a.albedo >= 0)
+      for (int q = 0; q < 3; ++q) b.plane(a.albedo + q)[i] = nh > 0 ? a.albedo_sum[q * n + j] / nh : 0.0f;
   }
   return b;
 }

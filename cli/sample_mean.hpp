@@ -20,7 +20,8 @@ class SampleMean {
   // `encoded`: the kernel's colour is gamma-encoded (undo it to average).
   SampleMean(const sdfrt::KernelSpec& spec, int width, int height, float gamma, bool encoded);
   // Sums needed per pixel for a kernel with (true) or without AOV planes.
-  static std::size_t floats_per_pixel(bool aov_planes) { return aov_planes ? 11 : 3; }
+  // (A path-traced kernel's albedo planes add 3.)
+  static std::size_t floats_per_pixel(bool aov_planes, bool albedo = false) { return (aov_planes ? 11 : 3) + (albedo ? 3 : 0); }
 
   // One pass of one sample per pixel, rows [y0, y0 + band.height).
   void add(const sdfrt::FloatImage& band, int y0);
@@ -33,6 +34,8 @@ class SampleMean {
   struct Aovs {
     int depth, nx, ny, nz, steps, material, iterations, hit;  // plane indices
     std::vector<float> hits, depth_sum, normal_sum, steps_sum, iter_sum, first_material;
+    int albedo;                     // albedo_r (g, b follow), or -1: a mean over the samples that hit
+    std::vector<float> albedo_sum;  // plane-major
   };
   int w_, h_;
   float gamma_;

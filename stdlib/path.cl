@@ -110,3 +110,22 @@ inline vec3 path_firefly(vec3 x, real c)
 {
     return v3(fmin(x.x, c), fmin(x.y, c), fmin(x.z, c));
 }
+
+//! fn path_glossy_pdf
+//! deps: vec3_ops
+//! class: helper
+// The density per solid angle with which a bounce draws l from v: the GGX
+// lobe with probability ps (its half vector's density D(h) cos(h) over
+// 4 v.h), else the cosine lobe. For weighting an environment map's samples
+// against the bounce's (multiple importance sampling).
+inline real path_glossy_pdf(vec3 n, vec3 v, vec3 l, real alpha, real ps)
+{
+    real nl = v3_dot(n, l);
+    vec3 h = v3_normalize(v3_add(l, v));
+    real nh = fmax(v3_dot(n, h), K(0.0f)), vh = fmax(v3_dot(v, h), K(1e-6f));
+    real a2 = alpha * alpha;
+    real q = nh * nh * (a2 - 1.0f) + 1.0f;
+    real d = a2 / fmax(K(3.14159265359f) * q * q, K(1e-12f));
+    real p = ps * d * nh / (4.0f * vh) + (1.0f - ps) * fmax(nl, K(0.0f)) * K(0.31830988618f);
+    return SEL(p, (real)(0.0f), nl <= 0.0f);
+}

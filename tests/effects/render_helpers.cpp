@@ -27,7 +27,7 @@ Rendered render_module(ir::Module module, int simd_width, int tile, int packet_r
   opt.packet_rows = packet_rows;
   opt.aovs = true;
   codegen::EmittedKernel k = codegen::emit_opencl(r.module, opt);
-  sdfrt::Renderer renderer(device(), {k.source, k.entry, k.simd_width, k.packet_rows, k.planes, ""});
+  sdfrt::Renderer renderer(device(), {k.source, k.entry, k.simd_width, k.packet_rows, k.planes, "", k.scene_data, k.environment});
   const int w = r.module.plan.march.width, h = r.module.plan.march.height;
   sdfrt::RenderOptions ro;
   ro.tile_width = ro.tile_height = tile;

@@ -170,4 +170,40 @@ TEST(ImageFormats, JpegDecodesCloseToThePng) {
   EXPECT_EQ(magic[1], 0xD8) << "JPEG data, not a PNG under that name";
 }
 
+// The path integrator's AOVs for denoisers (OIDN takes colour, albedo and
+// normal): an EXR with --aov albedo,normal holds the layers albedo.R/G/B
+// and N.X/N.Y/N.Z, the first hit's colour (1 on glass, 0 where nothing is
+// hit) and its normal, averaged over the progressive passes.
+TEST(ImageFormats, PathAlbedoAndNormalLayersForDenoisers) {
+  ScratchDir dir;
+  const std::string s = dir.write("p.yaml",
+                                  "render: {width: 48, height: 24, samples: 8, integrator: path}\n"
+                                  "camera: {position: [0, -6, 0], target: [0, 0, 0], fov: 40}\n"
+                                  "materials: {paint: {color: [0.2, 0.4, 0.6], roughness: 0.3}, clear: {glass: {ior: 1.5}}}\n"
+                                  "scene: {union: [{translate: [-1.2, 0, 0], sphere: {radius: 1}, material: paint},\n"
+                                  "                {translate: [1.2, 0, 0], sphere: {radius: 1}, material: clear}]}\n");
+  RunResult r = sdfc::test::run_sdfc("render " + s + " -q --aov albedo,normal -o " + dir.file("p.exr"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  int w = 0, h = 0;
+  auto c = read_exr(dir.file("p.exr"), &w, &h);
+  ASSERT_EQ(w, 48);
+  for (const char* name : {"R", "G", "B", "albedo.R", "albedo.G", "albedo.B", "N.X", "N.Y", "N.Z"})
+    ASSERT_TRUE(c.count(name)) << name;
+  // the pixel the left ball's centre is seen in, the right one's, a corner
+  const std::size_t paint = 12 * 48 + 17, clear = 12 * 48 + 30, corner = 0;
+  EXPECT_NEAR(c["albedo.R"][paint], 0.2, 2e-3);
+  EXPECT_NEAR(c["albedo.G"][paint], 0.4, 2e-3);
+  EXPECT_NEAR(c["albedo.B"][paint], 0.6, 2e-3);
+  for (const char* ch : {"albedo.R", "albedo.G", "albedo.B"}) {
+    EXPECT_NEAR(c[ch][clear], 1.0, 1e-3) << ch;
+    EXPECT_EQ(c[ch][corner], 0.0f) << ch;
+  }
+  EXPECT_LT(c["N.Y"][paint], -0.95);  // it faces the camera
+  EXPECT_LT(c["N.Y"][clear], -0.95);
+  // the direct integrator has no albedo to give: a usage error
+  r = sdfc::test::run_sdfc("render " + s + " -q --set render.integrator=direct --aov albedo -o " + dir.file("d.exr"));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("path integrator"), std::string::npos) << r.err;
+}
+
 }  // namespace

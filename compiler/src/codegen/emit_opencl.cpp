@@ -93,7 +93,7 @@ EmittedKernel emit_opencl(const ir::Module& m, const EmitOptions& opt) {
   const bool path = m.plan.transport.integrator == ir::Transport::Integrator::Path;
   std::string shading = path ? std::string() : detail::emit_shading(detail::with_trap_ranges(m), facts, lit, used);
   if (facts.material_blend) shading += "\n" + detail::emit_scene_material(m, lit, used);
-  std::string kernel = path ? detail::path_functions(m, detail::with_trap_ranges(m), lit, used) + "\n"
+  std::string kernel = path ? detail::path_functions(m, detail::with_trap_ranges(m), lit, used, opt.aovs) + "\n"
                             : detail::segment_function(m, lit, used) + "\n" + detail::radiance_function(m, used) + "\n";
   kernel += detail::render_kernel(m, lit, used, opt);
   // With object sets the probes take the scene data as their last argument.
@@ -115,8 +115,10 @@ EmittedKernel emit_opencl(const ir::Module& m, const EmitOptions& opt) {
   k.packet_rows = rows;
   k.planes.assign(abi::kImagePlanes.begin(), abi::kImagePlanes.end());
   if (opt.aovs) k.planes.insert(k.planes.end(), abi::kAovPlanes.begin(), abi::kAovPlanes.end());
+  if (opt.aovs && path) k.planes.insert(k.planes.end(), abi::kPathAovPlanes.begin(), abi::kPathAovPlanes.end());
   k.frame_floats = abi::kFrameFloats + m.unlocked;
   k.scene_data = detail::scene_data(m);
+  if (detail::env_map_used(m.plan)) k.environment = m.plan.background.map.data;
   std::string before, after;
   for (const auto* f : fns) {
     k.stdlib_functions.push_back(f->name);

@@ -3,6 +3,7 @@
 // and the radiance of one camera ray (segment_emitter.cpp, the direct
 // integrator), the path integrator (path_emitter.cpp) and the render kernel
 // that places the samples (render_kernel_emitter.cpp).
+#include <functional>
 #include <set>
 #include <string>
 
@@ -30,9 +31,20 @@ std::string surface_table(const ir::RenderPlan& plan, bool glossy, bool emission
 // reflected or refracted direction of the lanes on glass, into nd, and the
 // side of the surface the next segment starts on.
 void glass_scatter(CodeWriter& w);
-std::string path_functions(const ir::Module& m, const ir::RenderPlan& plan, const Literals& lit, std::set<std::string>& used);
+// aovs: sdfc_path also returns the first hit's albedo (1 on glass).
+std::string path_functions(const ir::Module& m, const ir::RenderPlan& plan, const Literals& lit, std::set<std::string>& used,
+                           bool aovs);
 // The background or sky along `rd`, as an expression (background_emitter.cpp).
 std::string background_call(const ir::RenderPlan& plan, const Literals& lit, std::set<std::string>& used);
+// background.map with the path integrator (path_env_emitter.cpp): whether
+// the kernel takes the map, the map's radiance where a path escapes (into
+// `env`, MIS-weighted by the last bounce's density pdf_b unless `delta`), and
+// a light sample drawn from the map at a vertex, added through `add` for `lanes`.
+bool env_map_used(const ir::RenderPlan& plan);
+void env_escape(CodeWriter& w, const ir::RenderPlan& plan, const Literals& lit, std::set<std::string>& used);
+void env_light(CodeWriter& w, const ir::RenderPlan& plan, const Literals& lit, std::set<std::string>& used,
+               const ir::RayBounds* bounds, bool glossy, const std::string& lanes,
+               const std::function<void(const std::string&, const std::string&, const std::string&)>& add);
 std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std::string>& used, const EmitOptions& opt);
 
 }  // namespace sdfc::codegen::detail

@@ -98,13 +98,25 @@ std::string hit_function(const ir::Module& m, const Literals& lit, std::set<std:
   return w.take();
 }
 
+// Which lobe a glossy vertex's bounce takes: the GGX lobe with the
+// probability ps of its Fresnel reflectance, else the diffuse one.
+void lobe_choice(CodeWriter& w) {
+  w.line("// pick the GGX lobe with the probability of its Fresnel reflectance, else the diffuse one");
+  w.line("real nv = fmax(v3_dot(n, v), K(1e-4f));");
+  w.line("vec3 fv = path_fresnel(f0, nv);");
+  w.line("real ws = v3_max_comp(fv), wd = v3_max_comp(v3_mul(diffuse, v3_sub(v3_splat(1.0f), fv)));");
+  w.line("real ps = SEL((real)(0.0f), clamp(ws / fmax(ws + wd, K(1e-6f)), K(0.05f), K(1.0f)), lobe);");
+}
+
 }  // namespace
 
-std::string path_functions(const ir::Module& m, const ir::RenderPlan& plan, const Literals& lit, std::set<std::string>& used) {
+std::string path_functions(const ir::Module& m, const ir::RenderPlan& plan, const Literals& lit, std::set<std::string>& used,
+                           bool aovs) {
   const ir::Transport& tr = plan.transport;
   const bool glossy = any_glossy(plan), emission = any_emission(plan), glass = any_glass(plan);
   const ir::RayBounds* bounds = m.analyses.ray_bounds ? &*m.analyses.ray_bounds : nullptr;
   const bool clamp = tr.clamp > 0;
+  const bool envmap = env_map_used(plan);
   used.insert("path_rand");
   used.insert("path_cosine_dir");
   if (clamp) used.insert("path_firefly");
@@ -128,11 +140,14 @@ std::string path_functions(const ir::Module& m, const ir::RenderPlan& plan, cons
   };
   w.line("// ---- the path integrator: the light along one camera ray; the AOVs of its first hit ----");
   w.line("vec3 sdfc_path(TIME_PARAM vec3 ro, vec3 rd, real pixel_angle, real jitter, real px, real py, scalar sf,");
-  w.line("               real* depth, vec3* normal, real* mat, real* steps)");
+  w.line(std::string("               real* depth, vec3* normal, real* mat, real* steps") + (aovs ? ", vec3* albedo_aov" : "") +
+         (envmap ? ", __global const float* envmap)" : ")"));
   w.open("{");
   w.line("vec3 sum = v3_splat(0.0f), thr = v3_splat(1.0f);  // the light gathered; the path's throughput");
   w.line("mask alive = M_TRUE;");
+  if (aovs) w.line("*albedo_aov = v3_splat(0.0f);  // the first hit's albedo, for denoisers");
   w.line("real from = 0.0f;  // the path's length up to the start of this segment");
+  if (envmap) w.line("real pdf_b = 1.0f; mask delta = M_TRUE;  // the last bounce's density; true for camera rays and glass");
   if (glass) {
     w.line("mask inside = !M_TRUE;  // the lanes whose path is inside a glass solid");
     w.line("vec3 sigma_in = v3_splat(0.0f);  // the absorption of the glass they are in");
@@ -158,7 +173,10 @@ std::string path_functions(const ir::Module& m, const ir::RenderPlan& plan, cons
   w.line("escaped = !hit;  // a camera ray that runs out of steps shows the background, as in the direct integrator");
   w.close("}");
   w.line("// the environment (the background or sky) where the path leaves the scene; a path that runs out of steps is lost");
-  w.line(fmt::format("vec3 env = {};", background_call(plan, lit, used)));
+  if (envmap)
+    env_escape(w, plan, lit, used);
+  else
+    w.line(fmt::format("vec3 env = {};", background_call(plan, lit, used)));
   add("v3_mul(thr, env)", "alive & escaped", "seg");
   w.line("alive = hit;");
   w.line("if (!M_ANY(alive)) break;");
@@ -176,6 +194,8 @@ std::string path_functions(const ir::Module& m, const ir::RenderPlan& plan, cons
     w.line("on_glass = on_glass & alive;");
     w.line("alive = alive & (on_glass | !inside);  // inside glass, only a glass surface lets the path out");
   }
+  if (aovs)  // denoisers take a perfectly specular surface's albedo as 1
+    w.line(glass ? "if (seg == 0) *albedo_aov = v3_select(albedo, v3_splat(1.0f), on_glass);" : "if (seg == 0) *albedo_aov = albedo;");
   if (emission) add("v3_mul(thr, emission)", "alive", "seg");
   w.line(fmt::format("if (seg == {}) break;  // no more scattering", tr.max_bounces));
   if (glossy) {
@@ -218,16 +238,17 @@ std::string path_functions(const ir::Module& m, const ir::RenderPlan& plan, cons
     add(term, glass ? "hit & !on_glass" : "hit", "seg + 1");  // glass reflects and refracts only in delta directions
     w.close("}");
   }
-  if (!any_light) w.line("(void)shadow_origin;");
+  if (envmap) {
+    if (glossy) lobe_choice(w);  // the map's sample weighs itself against the bounce's density
+    env_light(w, plan, lit, used, bounds, glossy, glass ? "hit & !on_glass" : "hit", add);
+  } else if (!any_light) {
+    w.line("(void)shadow_origin;");
+  }
   w.line(fmt::format("const scalar dim = (scalar)(seg * 4);  // four random numbers per bounce"));
   w.line("real u0 = path_rand(px, py, sf, dim), u1 = path_rand(px, py, sf, dim + 1.0f), u2 = path_rand(px, py, sf, dim + 2.0f);");
   if (glass) w.line("const vec3 thr_in = thr;");
   if (glossy) {
-    w.line("// pick the GGX lobe with the probability of its Fresnel reflectance, else the diffuse one");
-    w.line("real nv = fmax(v3_dot(n, v), K(1e-4f));");
-    w.line("vec3 fv = path_fresnel(f0, nv);");
-    w.line("real ws = v3_max_comp(fv), wd = v3_max_comp(v3_mul(diffuse, v3_sub(v3_splat(1.0f), fv)));");
-    w.line("real ps = SEL((real)(0.0f), clamp(ws / fmax(ws + wd, K(1e-6f)), K(0.05f), K(1.0f)), lobe);");
+    if (!envmap) lobe_choice(w);
     w.line("mask take_spec = u0 < ps;");
     w.line("vec3 h = path_ggx_half(n, alpha, u1, u2);");
     w.line("vec3 ls = v3_normalize(v3_mad(rd, h, -2.0f * v3_dot(rd, h)));  // rd mirrored about h");
@@ -239,15 +260,18 @@ std::string path_functions(const ir::Module& m, const ir::RenderPlan& plan, cons
     w.line("vec3 w_diff = v3_scale(v3_mul(diffuse, v3_sub(v3_splat(1.0f), fv)), 1.0f / fmax(1.0f - ps, K(1e-6f)));");
     w.line("thr = v3_mul(thr, v3_select(w_diff, w_spec, take_spec));");
     w.line("vec3 nd = v3_select(ld, ls, take_spec);");
+    if (envmap) w.line("pdf_b = path_glossy_pdf(n, v, nd, alpha, ps);");
   } else {
     w.line("// a cosine-weighted diffuse bounce: f cos / pdf = albedo");
     if (!glass) w.line("(void)u0;");
     w.line("vec3 nd = path_cosine_dir(n, u1, u2);");
     w.line("thr = v3_mul(thr, albedo);");
+    if (envmap) w.line("pdf_b = fmax(v3_dot(n, nd), K(0.0f)) * K(0.31830988618f);");
   }
   if (glass) {
     w.line("vec3 start = shadow_origin;");
     glass_scatter(w);
+    if (envmap) w.line("delta = on_glass;");
   }
   w.line(fmt::format("if (seg >= {})", tr.roulette_after));
   w.open("{");
@@ -263,6 +287,7 @@ std::string path_functions(const ir::Module& m, const ir::RenderPlan& plan, cons
   w.line(glass ? "ro = v3_mad(start, rd, -t);" : "ro = v3_mad(shadow_origin, rd, -t);");
   w.line("from = t;");
   w.line("jitter = 0.0f;  // render.dither: the camera ray only");
+  if (envmap && !glass) w.line("delta = !M_TRUE;");
   w.close("}");
   w.line("return sum;");
   w.close("}");

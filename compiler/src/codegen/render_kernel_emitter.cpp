@@ -20,11 +20,14 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
   const ir::Camera& cam = m.plan.camera;
   const bool path = m.plan.transport.integrator == ir::Transport::Integrator::Path;
   const bool sampled = s.samples > 1 || cam.aperture > 0 || path;  // a path is sampled even at one sample
+  const bool albedo = path && aovs;  // kernel_abi.hpp's kPathAovPlanes
   CodeWriter w;
   w.line("// ---- the render kernel: a packet of SDFC_PACKET_W x SDFC_PACKET_H pixels per work-item ----");
   w.line("__kernel void sdfc_render(__global float* out, __global const float* frame,");
   w.line("                          const int img_w, const int img_h, const int tile_x0, const int tile_y0,");
-  w.line("                          const int tile_w, const int tile_h, const int out_stride)");
+  // background.map: the map and its sampling tables (path_env_emitter.cpp)
+  w.line(env_map_used(m.plan) ? "                          const int tile_w, const int tile_h, const int out_stride, __global const float* envmap)"
+                              : "                          const int tile_w, const int tile_h, const int out_stride)");
   w.open("{");
   w.line("const int gx = get_global_id(0), gy = get_global_id(1);");
   w.line("const int x0 = gx * SDFC_PACKET_W, y0 = gy * SDFC_PACKET_H;");
@@ -46,6 +49,7 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
     w.line(fmt::format("__global const float* scene_data = frame + {};  // the object sets' numbers", abi::kFrameFloats + m.unlocked));
   w.line(aovs ? "real depth, mat, steps, iterations;" : "real depth, mat, steps;");
   w.line("vec3 normal;");
+  if (albedo) w.line("vec3 albedo;  // the first hit's, for denoisers");
   std::string post;  // per-sample exposure and tone curve
   if (s.exposure != 0) post += fmt::format("c = v3_scale(c, {});  // render.exposure: {} stop(s)\n", lit.real(std::exp2(s.exposure)), s.exposure);
   if (opt.linear) {
@@ -111,6 +115,7 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
     w.line("// steps = mean over all; material = that of the first sample (in sample order) that hits");
     w.line("real hits = 0.0f, depth_sum = 0.0f, steps_sum = 0.0f;");
     w.line("vec3 normal_sum = v3_splat(0.0f);");
+    if (albedo) w.line("vec3 albedo_sum = v3_splat(0.0f), a_s;  // albedo: the mean over the samples that hit");
     w.line("mat = (real)(-1.0f);");
     if (aovs) w.line("real iter_sum = 0.0f;");
     w.line("for (int si = s_first; si < s_first + s_count; ++si)");
@@ -150,7 +155,8 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
     w.line("real d_s, mat_s, steps_s;");
     w.line("vec3 n_s;");
     if (path)  // render.integrator: path, seeded by the absolute pixel and the sample
-      w.line("vec3 c = sdfc_path(TIME_ARG ro, rd, pixel_angle, jitter, px0, py0, sf, &d_s, &n_s, &mat_s, &steps_s);");
+      w.line(std::string("vec3 c = sdfc_path(TIME_ARG ro, rd, pixel_angle, jitter, px0, py0, sf, &d_s, &n_s, &mat_s, &steps_s") +
+             (albedo ? ", &a_s" : "") + (env_map_used(m.plan) ? ", envmap);" : ");"));
     else
       w.line("vec3 c = sdfc_radiance(TIME_ARG ro, rd, pixel_angle, jitter, &d_s, &n_s, &mat_s, &steps_s);");
     emit_post();
@@ -160,6 +166,7 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
     w.line("hits += SEL((real)(0.0f), (real)(1.0f), hit_s);");
     w.line("depth_sum += SEL((real)(0.0f), d_s, hit_s);");
     w.line("normal_sum = v3_add(normal_sum, v3_select(v3_splat(0.0f), n_s, hit_s));");
+    if (albedo) w.line("albedo_sum = v3_add(albedo_sum, v3_select(v3_splat(0.0f), a_s, hit_s));");
     w.line("steps_sum += steps_s;");
     if (aovs)
       w.line("iter_sum += SEL((real)(0.0f), scene_iterations(TIME_ARG v3_mad(ro, rd, fmax(d_s, K(0.0f)))), hit_s);");
@@ -169,6 +176,7 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
     w.line("real n_len = sqrt(v3_dot(normal_sum, normal_sum));");
     w.line("normal = v3_scale(normal_sum, SEL((real)(0.0f), 1.0f / fmax(n_len, K(1e-30f)), n_len > K(1e-30f)));");
     w.line("steps = steps_sum * (1.0f / (scalar)s_count);");
+    if (albedo) w.line("albedo = v3_scale(albedo_sum, per_hit);");
     if (aovs) {
       w.line("iterations = iter_sum * per_hit;");
       w.line("real coverage = hits * (1.0f / (scalar)s_count);");
@@ -202,6 +210,11 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
     store("material", "mat");
     store("iterations", "iterations");
     store("hit", "coverage", "  // hit: the fraction of samples that hit");
+    if (albedo) {
+      store("albedo_r", "albedo.x", "  // albedo: the first hit's colour (0 on a miss)");
+      store("albedo_g", "albedo.y");
+      store("albedo_b", "albedo.z");
+    }
   } else {
     w.line("(void)normal; (void)mat; (void)steps;");
   }

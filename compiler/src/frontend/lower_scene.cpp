@@ -90,7 +90,8 @@ void read_background(ValueReader& r, const SourceValue& v, ir::Background& bg) {
     bg.top = bg.bottom = r.vec3(v, "background", unit);
     return;
   }
-  MapReader m(r, v, "background", {"top", "bottom", "sky"});
+  MapReader m(r, v, "background", {"top", "bottom", "sky", "map", "rotation", "intensity", "visible", "sampling"});
+  frontend::read_environment_map(r, m, bg);  // read_environment.cpp
   if (const SourceValue* sky = m.get("sky")) return frontend::read_sky(r, *sky, bg);  // read_transport.cpp
   bg.top = m.vec3("top", bg.top, unit);
   bg.bottom = m.vec3("bottom", bg.bottom, unit);

@@ -20,3 +20,11 @@ void read_material_pbr(ValueReader& r, const SourceValue& body, const std::strin
 // (smooth glass has neither).
 void read_glass(ValueReader& r, const SourceValue& v, const std::string& what, ir::MaterialDef& md, const SourceValue* lobe);
 }  // namespace sdfc::frontend
+
+namespace sdfc::frontend {
+// background: {map: FILE.exr | FILE.hdr, rotation, intensity, visible,
+// sampling} (read_environment.cpp): reads and checks the file, relative to
+// the scene file, and builds its sampling tables into bg.map.
+// Reports its other keys when there is no map.
+void read_environment_map(ValueReader& r, MapReader& m, ir::Background& bg);
+}  // namespace sdfc::frontend

@@ -16,6 +16,7 @@
 
 #include <atomic>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -34,6 +35,9 @@ struct KernelSpec {
   // Numbers the kernel reads after the frame block it is given (the
   // compiler's object sets): uploaded with the first frame, behind it.
   std::vector<float> scene_data = {};
+  // An environment map's buffer (background.map): uploaded once, passed as
+  // the kernel's tenth argument `envmap`. Null: the kernel has nine.
+  std::shared_ptr<const std::vector<float>> environment;
 };
 
 struct RenderOptions {
@@ -92,6 +96,7 @@ class Renderer {
   std::optional<Kernel> kernel_;
   BufferHandle out_buffer_;
   std::size_t out_buffer_floats_ = 0;
+  BufferHandle env_buffer_;  // KernelSpec::environment, on the device
   BufferHandle frame_buffer_;
   std::size_t frame_buffer_floats_ = 0;
   std::size_t frame_head_floats_ = 0;  // the frame block's part of it; spec_.scene_data follows

@@ -31,7 +31,7 @@ double event_ms(cl_event event) {
 }
 
 // Argument indices of the fixed kernel ABI.
-enum Arg : unsigned { kOut, kFrame, kImgW, kImgH, kTileX0, kTileY0, kTileW, kTileH, kOutStride };
+enum Arg : unsigned { kOut, kFrame, kImgW, kImgH, kTileX0, kTileY0, kTileW, kTileH, kOutStride, kEnvironment };
 
 }  // namespace
 
@@ -49,6 +49,13 @@ Renderer::Renderer(Device& device, const KernelSpec& spec) : device_(&device), s
   }
   program_.emplace(build_program(device, spec_.source, spec_.build_options, &build_stats_));
   kernel_.emplace(program_->kernel(spec_.entry));
+  if (spec_.environment && !spec_.environment->empty()) {
+    cl_int status = CL_SUCCESS;
+    const std::size_t bytes = spec_.environment->size() * sizeof(float);
+    env_buffer_.reset(clCreateBuffer(device_->context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, bytes,
+                                     const_cast<float*>(spec_.environment->data()), &status));
+    check_cl(status, fmt::format("clCreateBuffer(environment map, {} bytes)", bytes));
+  }
 }
 
 void Renderer::ensure_out_buffer(std::size_t floats) {
@@ -136,6 +143,10 @@ FloatImage Renderer::render(const std::vector<float>& frame, int width, int heig
   cl_mem frame_mem = frame_buffer_.get();
   kernel.set_arg(kOut, out);
   kernel.set_arg(kFrame, frame_mem);
+  if (env_buffer_) {
+    cl_mem env = env_buffer_.get();
+    kernel.set_arg(kEnvironment, env);
+  }
   kernel.set_arg(kImgW, static_cast<cl_int>(windowed ? win.full_width : width));
   kernel.set_arg(kImgH, static_cast<cl_int>(windowed ? win.full_height : height));
 

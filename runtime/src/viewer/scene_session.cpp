@@ -54,7 +54,7 @@ SceneSession::Built SceneSession::build(sdfrt::Device& device, const SceneOption
   eo.simd_width = options.simd_width;
   eo.aovs = true;
   codegen::EmittedKernel k = codegen::emit_opencl(*m, eo);
-  sdfrt::KernelSpec spec{k.source, k.entry, k.simd_width, k.packet_rows, k.planes, "", k.scene_data};
+  sdfrt::KernelSpec spec{k.source, k.entry, k.simd_width, k.packet_rows, k.planes, "", k.scene_data, k.environment};
   b.renderer = std::make_unique<sdfrt::Renderer>(device, spec);
   b.module = std::move(m);
   b.options = options;

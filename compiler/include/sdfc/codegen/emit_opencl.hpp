@@ -6,6 +6,7 @@
 // Each work-item shades a packet of `simd_width` pixels (a tile of
 // packet_rows rows): the stdlib is written
 // over `real`/`vec3`/`mask`, which the prelude defines per width and precision.
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,9 @@ struct EmittedKernel {
   // the frame buffer after the frame block and the unlocked values.
   std::vector<float> scene_data;
   std::vector<std::string> stdlib_functions;  // which stdlib functions it holds
+  // background.map with the path integrator: the buffer for the kernel's
+  // last argument, `envmap` (ir::EnvironmentMap::data); null without one.
+  std::shared_ptr<const std::vector<float>> environment;
 };
 
 EmittedKernel emit_opencl(const ir::Module& m, const EmitOptions& opt = {});

@@ -30,12 +30,19 @@ inline constexpr std::array<std::string_view, 4> kImagePlanes = {"r", "g", "b", 
 inline constexpr std::array<std::string_view, 7> kAovPlanes = {"normal_x", "normal_y", "normal_z", "steps",
                                                                "material", "iterations", "hit"};
 
-// The index of plane `name` in a kernel with AOVs, or -1.
+// A path-traced kernel with AOVs adds the first hit's albedo (for
+// denoisers), after the AOV planes.
+inline constexpr std::array<std::string_view, 3> kPathAovPlanes = {"albedo_r", "albedo_g", "albedo_b"};
+
+// The index of plane `name` in a kernel with AOVs (a path-traced one for
+// the albedo), or -1.
 constexpr int plane_index(std::string_view name) {
   for (size_t i = 0; i < kImagePlanes.size(); ++i)
     if (kImagePlanes[i] == name) return int(i);
   for (size_t i = 0; i < kAovPlanes.size(); ++i)
     if (kAovPlanes[i] == name) return int(kImagePlanes.size() + i);
+  for (size_t i = 0; i < kPathAovPlanes.size(); ++i)
+    if (kPathAovPlanes[i] == name) return int(kImagePlanes.size() + kAovPlanes.size() + i);
   return -1;
 }
 

@@ -4,6 +4,7 @@
 // passes over geometry never see it and vice versa.
 #include "sdfc/expr/expr.hpp"
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -124,10 +125,28 @@ struct Sky {
   double glow_power = 8;                        // derived: the halo's falloff
 };
 
+// An equirectangular environment map (issue 24, `background: {map: ...}`),
+// lighting the path integrator. The pixels and their sampling tables are
+// loaded by the front end (environment_map.cpp) and reach the kernel as a
+// buffer argument; the file name never does.
+struct EnvironmentMap {
+  bool enabled = false;
+  std::string file;         // as the scene wrote it, for messages
+  double rotation = 0;      // degrees about the up axis, counter-clockwise seen from above
+  double intensity = 1;     // scales the map's values
+  bool visible = true;      // camera rays see the map; false: they see top/bottom
+  bool importance = true;   // sampling: importance (luminance x sin theta) or uniform
+  int width = 0, height = 0;
+  // rgb (width x height, top row first, times intensity), then the marginal
+  // CDF over rows (height + 1), then one CDF per row (width + 1 each).
+  std::shared_ptr<const std::vector<float>> data;
+};
+
 struct Background {
   Vec3d top{0.45, 0.55, 0.7};
   Vec3d bottom{0.15, 0.17, 0.22};
   Sky sky;
+  EnvironmentMap map;
 };
 
 enum class LightKind { Directional, Point, Ambient };
