@@ -56,7 +56,7 @@ int run_check(const SceneArgs& args) {
   fmt::print("  work per sample ~{:.3g} (limit {:.3g}, see docs/security.md)\n", estimated_cost_per_sample(m),
              scene_caps().max_cost_per_sample);
   // Every node with its class and Lipschitz constant, and where the kernel
-  // divides by L (issue 9: the correction is local to that subtree).
+  // divides by L (the correction is local to that subtree).
   int corrected = 0, steep = 0;
   for (ir::NodeId id : g.postorder(m.root)) {
     const ir::Node& n = g.node(id);

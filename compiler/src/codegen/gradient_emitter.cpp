@@ -1,6 +1,6 @@
 // render.normals: dual. The distance and its gradient flow up together; the
 // combinators pick the gradient of the child whose distance they pick, the
-// transforms map it back to world space.
+// transforms map it back to world space (their descriptions' walk_dual).
 #include "gradient_emitter.hpp"
 
 #include <fmt/format.h>
@@ -9,20 +9,18 @@
 
 #include "fractal_emitter.hpp"
 #include "kind_call.hpp"
+#include "../kinds/walker.hpp"
 #include "sdfc/kinds/registry.hpp"
 
 namespace sdfc::codegen::detail {
 
 namespace {
 
-using ir::Kind;
 using ir::NodeId;
 
-struct DG {
-  std::string d, g;
-};
+using DG = kinds::Dual;
 
-class GradientEmitter {
+class GradientEmitter final : public kinds::DualWalker {
  public:
   GradientEmitter(const ir::Module& m, const Literals& lit, std::set<std::string>& used)
       : g_(*m.graph), lit_(lit), used_(used) {}
@@ -37,9 +35,6 @@ class GradientEmitter {
     return w_.take();
   }
 
- private:
-  std::string var(const char* prefix) { return fmt::format("{}{}", prefix, w_.fresh()); }
-
   DG leaf(const std::string& fn, const std::string& args, const ir::Node& n) {
     used_.insert(fn);
     DG v{var("d"), var("g")};
@@ -48,101 +43,20 @@ class GradientEmitter {
     return v;
   }
 
+  // kinds::DualWalker, for the kinds with children.
+  DG child(NodeId id, const std::string& p) override { return emit(id, p); }
+  void line(const std::string& s) override { w_.line(s); }
+  std::string var(const char* prefix) override { return fmt::format("{}{}", prefix, w_.fresh()); }
+  std::string call(const std::string& fn) override {
+    used_.insert(fn);
+    return fn;
+  }
+  const Literals& lit() const override { return lit_; }
+
+ private:
   DG emit(NodeId id, const std::string& p) {
     const ir::Node& n = g_.node(id);
-    const auto& q = n.params;
-    auto r = [&](size_t i) { return lit_.real(q[i]); };
-    switch (n.kind) {
-      // Described kinds: the description's gradient function, same arguments.
-      default: break;
-      case Kind::Translate: {
-        std::string p2 = var("p");
-        w_.line(fmt::format("vec3 {} = v3_sub({}, {});", p2, p, lit_.vec3({q[0], q[1], q[2]})));
-        return emit(n.children[0], p2);
-      }
-      case Kind::Rotate: {
-        // The point goes world->local (the transpose), the gradient local->world.
-        std::string p2 = var("p");
-        w_.line(fmt::format("vec3 {} = v3_mat({}, {}, {}, {}, {}, {}, {}, {}, {}, {});", p2, p, r(0), r(3), r(6), r(1),
-                            r(4), r(7), r(2), r(5), r(8)));
-        DG c = emit(n.children[0], p2);
-        std::string g = var("g");
-        w_.line(fmt::format("vec3 {} = v3_mat({}, {}, {}, {}, {}, {}, {}, {}, {}, {});", g, c.g, r(0), r(1), r(2), r(3),
-                            r(4), r(5), r(6), r(7), r(8)));
-        return {c.d, g};
-      }
-      case Kind::Scale: {
-        // d(p) = s d_c(p / s): the gradient is the child's.
-        std::string p2 = var("p");
-        w_.line(fmt::format("vec3 {} = v3_scale({}, {});", p2, p, lit_.real(1.0 / q[0])));
-        DG c = emit(n.children[0], p2);
-        std::string d = var("d");
-        w_.line(fmt::format("real {} = {} * {};", d, c.d, r(0)));
-        return {d, c.g};
-      }
-      case Kind::StepFactor: {
-        DG c = emit(n.children[0], p);
-        std::string d = var("d"), g = var("g");
-        w_.line(fmt::format("real {} = {} * {};", d, c.d, r(0)));
-        w_.line(fmt::format("vec3 {} = v3_scale({}, {});", g, c.g, r(0)));
-        return {d, g};
-      }
-      case Kind::Material: return emit(n.children[0], p);
-      // A bounding box the optimiser inserted: at a hit the point is inside
-      // its margin, so the distance and gradient are the child's.
-      case Kind::Bounded: return emit(n.children[0], p);
-      case Kind::SmoothUnion:
-      case Kind::SmoothIntersection:
-      case Kind::SmoothDifference: {
-        std::vector<DG> kids;
-        for (NodeId c : n.children) kids.push_back(emit(c, p));
-        used_.insert("opg_smooth");
-        DG v{var("d"), var("g")};
-        std::string k = r(0);
-        w_.line(fmt::format("real {} = {};  // {}", v.d, kids[0].d, ir::info(n.kind).name));
-        w_.line(fmt::format("vec3 {} = {};", v.g, kids[0].g));
-        for (size_t i = 1; i < kids.size(); ++i) {
-          const DG& c = kids[i];
-          if (n.kind == Kind::SmoothUnion) {
-            used_.insert("op_smooth_union");
-            w_.line(fmt::format("{} = opg_smooth({}, {}, {}, {}, {}, 1.0f);", v.g, v.d, c.d, v.g, c.g, k));
-            w_.line(fmt::format("{} = op_smooth_union({}, {}, {});", v.d, v.d, c.d, k));
-          } else if (n.kind == Kind::SmoothIntersection) {
-            used_.insert("op_smooth_intersection");
-            w_.line(fmt::format("{} = opg_smooth({}, {}, {}, {}, {}, -1.0f);", v.g, v.d, c.d, v.g, c.g, k));
-            w_.line(fmt::format("{} = op_smooth_intersection({}, {}, {});", v.d, v.d, c.d, k));
-          } else {
-            used_.insert("op_smooth_intersection");
-            w_.line(fmt::format("{} = opg_smooth({}, -{}, {}, v3_scale({}, -1.0f), {}, -1.0f);", v.g, v.d, c.d, v.g, c.g, k));
-            w_.line(fmt::format("{} = op_smooth_intersection({}, -{}, {});", v.d, v.d, c.d, k));
-          }
-        }
-        return v;
-      }
-      case Kind::Union:
-      case Kind::Intersection:
-      case Kind::Difference: {
-        std::vector<DG> kids;
-        for (NodeId c : n.children) kids.push_back(emit(c, p));
-        DG v{var("d"), var("g")};
-        w_.line(fmt::format("real {} = {};  // {}", v.d, kids[0].d, ir::info(n.kind).name));
-        w_.line(fmt::format("vec3 {} = {};", v.g, kids[0].g));
-        for (size_t i = 1; i < kids.size(); ++i) {
-          const DG& k = kids[i];
-          if (n.kind == Kind::Union) {
-            w_.line(fmt::format("{} = v3_select({}, {}, {} < {});", v.g, v.g, k.g, k.d, v.d));
-            w_.line(fmt::format("{} = fmin({}, {});", v.d, v.d, k.d));
-          } else if (n.kind == Kind::Intersection) {
-            w_.line(fmt::format("{} = v3_select({}, {}, {} > {});", v.g, v.g, k.g, k.d, v.d));
-            w_.line(fmt::format("{} = fmax({}, {});", v.d, v.d, k.d));
-          } else {
-            w_.line(fmt::format("{} = v3_select({}, v3_scale({}, -1.0f), -{} > {});", v.g, v.g, k.g, k.d, v.d));
-            w_.line(fmt::format("{} = fmax({}, -{});", v.d, v.d, k.d));
-          }
-        }
-        return v;
-      }
-    }
+    if (const kinds::Description* d = kinds::operation(n.kind); d && d->walk_dual) return d->walk_dual(*this, n, p);
     const kinds::Description* d = kinds::find(n.kind);
     if (d && d->emit_dual) return fractal(n, p);
     if (!d || d->gradient_function.empty())

@@ -1,6 +1,6 @@
-// Object sets in the kernel: one call of the stdlib's hierarchy walk per set
-// (os_union, stdlib/object_set.cl), its numbers read from the scene data
-// buffer, so the kernel source is the same size for ten objects or ten thousand.
+// Object sets' numbers in the kernel: the scene data buffer behind the frame
+// block, and the prelude that passes it to every scene function. The walk
+// itself is the object_set kind's (kinds/object_set.cpp).
 #include "object_set_emitter.hpp"
 
 #include <fmt/format.h>
@@ -12,34 +12,6 @@
 namespace sdfc::codegen::detail {
 
 namespace os = ir::object_set;
-
-ObjectSetCode emit_object_set(const ir::Node& n, const std::string& p, const std::string& where, CodeWriter& w,
-                              std::set<std::string>& used) {
-  const os::View v{n.params};
-  used.insert("os_union");
-  ObjectSetCode c{fmt::format("d{}", w.fresh()), fmt::format("m{}", w.fresh())};
-  w.line(fmt::format("real {};  // object set: {} items, {} primitives, {} hierarchy nodes as data{}", c.mat, v.items(),
-                     v.prims(), v.nodes(), where));
-  w.line(fmt::format("real {} = os_union({}, scene_data + {}, {}, {}, &{});", c.d, p, v.offset(), v.nodes(), v.items(),
-                     c.mat));
-  return c;
-}
-
-std::string object_set_record(const std::string& id, const ir::Module& m, const Literals& lit, CodeWriter& w,
-                              std::set<std::string>& used) {
-  used.insert("mat_record");
-  std::string rec = fmt::format("r{}", w.fresh());
-  std::string extra = m.analyses.orbit_traps ? ", " + lit.typed(0) : "";  // no fractal in a set: trap 0
-  if (m.analyses.coloring_geometry) extra += ", p, n";
-  w.line(fmt::format("mat_record {};  // the object set's nearest material", rec));
-  w.line(fmt::format("material_of({}, &{}.albedo, &{}.specular, &{}.shininess{});", id, rec, rec, rec, extra));
-  w.line(fmt::format("{}.reflectivity = {};", rec, lit.typed(0)));
-  for (size_t i = 0; i < m.plan.materials.size(); ++i)
-    if (m.plan.materials[i].reflectivity != 0)
-      w.line(fmt::format("{0}.reflectivity = SEL({0}.reflectivity, {1}, {2} == {3});", rec,
-                         lit.typed(m.plan.materials[i].reflectivity), id, lit.typed(double(i))));
-  return rec;
-}
 
 std::vector<float> scene_data(const ir::Module& m) {
   std::vector<float> data;

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "sdfc/reference/evaluator.hpp"
+#include "sdfc/kinds/params.hpp"
 
 namespace sdfc::codegen::detail {
 
@@ -18,7 +19,7 @@ using ir::NodeId;
 // node above; 0 at the root).
 void collect(const ir::Graph& g, NodeId id, int material, std::map<int, std::set<NodeId>>& out) {
   const ir::Node& n = g.node(id);
-  if (n.kind == Kind::Material) material = int(n.params[0]);
+  if (n.kind == Kind::Material) material = kinds::material_id(n);
   if (ir::info(n.kind).category == ir::Category::Fractal) out[material].insert(id);
   for (NodeId c : n.children) collect(g, c, material, out);
 }
@@ -64,7 +65,7 @@ void position_range(const ir::Module& m, int material, const ir::Vec3d& axis, do
   bool any = false;
   for (NodeId id : m.graph->postorder(m.root)) {
     const ir::Node& n = m.graph->node(id);
-    if (n.kind != Kind::Material || int(n.params[0]) != material || !n.props.bounds.finite()) continue;
+    if (n.kind != Kind::Material || kinds::material_id(n) != material || !n.props.bounds.finite()) continue;
     b = any ? b.united(n.props.bounds) : n.props.bounds;
     any = true;
   }

@@ -5,6 +5,8 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "sdfc/kinds/params.hpp"
+
 namespace sdfc::ir {
 
 std::string_view to_string(DistanceClass c) {
@@ -129,7 +131,7 @@ bool Graph::animated(NodeId root) const {
   for (NodeId id : postorder(root)) {
     const Node& n = nodes_[id];
     if (n.animated()) return true;
-    if (n.kind == Kind::Displace && expr::uses(expressions.at(size_t(n.params[0])), "time")) return true;
+    if (n.kind == Kind::Displace && expr::uses(expressions.at(kinds::displacement(n)), "time")) return true;
   }
   return false;
 }

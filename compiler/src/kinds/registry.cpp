@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -57,6 +58,16 @@ void check(const Description& d) {
   auto missing = [&](const char* part) {
     throw std::logic_error(fmt::format("kind '{}': its description has no {}", k.name, part));
   };
+  if (d.param_count != k.params.size())
+    throw std::logic_error(fmt::format("kind '{}': its parameter struct holds {} numbers, its table row names {}",
+                                       k.name, d.param_count, k.params.size()));
+  if (d.child_props || d.evaluate || d.walk) {  // a kind with children
+    if (!d.child_props) missing("child_props");
+    if (!d.evaluate) missing("reference evaluate");
+    if (!d.walk) missing("walk (its code in the scene walker)");
+    if (d.dual_normals && !d.walk_dual) missing("walk_dual (it claims dual normals)");
+    return;
+  }
   if (d.yaml.empty()) missing("YAML key");
   if (d.example.empty()) missing("example");
   if (!d.lower) missing("lower");
@@ -79,15 +90,12 @@ void check(const Description& d) {
   for (const ParamDoc& p : d.docs)
     if (p.name.empty() || p.type.empty() || p.what.empty())
       throw std::logic_error(fmt::format("kind '{}': parameter doc '{}' lacks its name, type or meaning", k.name, p.name));
-  if (d.param_count != k.params.size())
-    throw std::logic_error(fmt::format("kind '{}': its parameter struct holds {} numbers, its table row names {}",
-                                       k.name, d.param_count, k.params.size()));
 }
 
 namespace {
 
 struct Registry {
-  std::vector<const Description*> list;
+  std::vector<const Description*> list, ops;
   std::map<ir::Kind, std::vector<CallArg>> args;
   Registry() {
 #define DESCRIBED(e) list.push_back(&described::e);
@@ -98,6 +106,7 @@ struct Registry {
       check(*d);
       if (!d->call_args.empty()) args[d->kind] = resolve(*d);
     }
+    std::erase_if(list, [&](const Description* d) { return d->walk && (ops.push_back(d), true); });
   }
 };
 
@@ -112,6 +121,14 @@ const std::vector<const Description*>& all() { return registry().list; }
 
 const Description* find(ir::Kind k) {
   for (const Description* d : all())
+    if (d->kind == k) return d;
+  return nullptr;
+}
+
+const std::vector<const Description*>& operations() { return registry().ops; }
+
+const Description* operation(ir::Kind k) {
+  for (const Description* d : operations())
     if (d->kind == k) return d;
   return nullptr;
 }

@@ -10,6 +10,7 @@
 #include <set>
 
 #include "fit_box.hpp"
+#include "sdfc/kinds/params.hpp"
 #include "sdfc/kinds/registry.hpp"
 #include "sdfc/ir/analyses.hpp"
 #include "sdfc/passes/passes.hpp"
@@ -32,6 +33,14 @@ bool orbit_traps(const ir::RenderPlan& plan) {
   return std::any_of(plan.materials.begin(), plan.materials.end(), [](const auto& md) { return md.orbit_coloured(); });
 }
 
+// Smooth blends whose children's materials are mixed by the blend weight
+// (their description's op_weight_* function): the polynomial smooth
+// operations and the cubic and exponential blends.
+bool mixes_materials(const ir::Node& n) {
+  const kinds::Description* d = kinds::operation(n.kind);
+  return d && d->weight && !d->weight(n).empty();
+}
+
 // The materials a subtree shows, as keys: the material id, or for a
 // material with an orbit-trap palette one key per leaf (each leaf has its own
 // trap, so two leaves of one such material still differ). Sets `blend` when
@@ -50,7 +59,7 @@ class BlendFinder {
     if (memo != memo_.end()) return memo->second;
     const ir::Node& n = g_.node(id);
     std::set<long> out;
-    if (n.kind == Kind::Material) mat = n.params[0];
+    if (n.kind == Kind::Material) mat = kinds::material_id(n);
     if (n.children.empty()) {
       bool trap = plan_.materials.at(size_t(mat)).orbit_coloured();
       out.insert(trap ? -1 - long(id) : long(mat));
@@ -59,7 +68,7 @@ class BlendFinder {
       std::set<long> k = keys(c, mat);
       out.insert(k.begin(), k.end());
     }
-    if (ir::mixes_materials(n) && out.size() > 1) blend_ = true;
+    if (mixes_materials(n) && out.size() > 1) blend_ = true;
     memo_.emplace(std::make_pair(id, mat), out);
     return out;
   }
@@ -81,7 +90,7 @@ std::optional<double> uniform_material(const ir::Module& m) {
   int materials = 0;
   for (NodeId n : g.postorder(m.root)) materials += g.node(n).kind == Kind::Material;
   if (materials != 1) return std::nullopt;
-  return g.node(id).params[0];
+  return kinds::material_id(g.node(id));
 }
 
 // Where rays march: the scene's inferred bounds padded by 1% of their size

@@ -4,6 +4,7 @@
 #include <map>
 
 #include "rewrite.hpp"
+#include "sdfc/kinds/params.hpp"
 #include "sdfc/passes/passes.hpp"
 
 namespace sdfc::passes {
@@ -12,7 +13,7 @@ ir::Module eliminate_dead(ir::Module m) {
   std::map<int, int> remap{{0, 0}};
   for (ir::NodeId id : m.graph->postorder(m.root)) {
     const ir::Node& n = m.graph->node(id);
-    if (n.kind == ir::Kind::Material) remap.emplace(int(n.params[0]), 0);
+    if (n.kind == ir::Kind::Material) remap.emplace(kinds::material_id(n), 0);
   }
   std::vector<ir::MaterialDef> kept;
   for (auto& [old_id, new_id] : remap) {
@@ -22,7 +23,7 @@ ir::Module eliminate_dead(ir::Module m) {
   m.plan.materials = std::move(kept);
   m = detail::rewrite(std::move(m), [&remap](ir::Builder& b, const ir::Node& n, std::vector<ir::NodeId> kids) {
     if (n.kind != ir::Kind::Material) return b.copy(n, std::move(kids));
-    return b.make(n.kind, {double(remap.at(int(n.params[0])))}, std::move(kids), n.loc);
+    return b.make(n.kind, {double(remap.at(kinds::material_id(n)))}, std::move(kids), n.loc);
   });
 
   std::vector<ir::Light> lit;

@@ -1,31 +1,25 @@
 // The box that camera.fit frames (see fit_box.hpp).
 #include "fit_box.hpp"
 
+#include "sdfc/kinds/registry.hpp"
+
 namespace sdfc::passes::detail {
 
 namespace {
 
-using ir::Kind;
-
 // A node's bounds; where they are unbounded, the union of its children's
-// finite boxes through unions, materials and bounding boxes (a union of a
-// fractal and a floor plane gives the fractal's box).
+// finite boxes through the kinds whose description says so (unions,
+// materials, bounding boxes: a union of a fractal and a floor plane gives
+// the fractal's box).
 std::optional<ir::Box3> finite_part(const ir::Graph& g, ir::NodeId id) {
   const ir::Node& n = g.node(id);
   if (n.props.bounds.finite()) return n.props.bounds;
-  switch (n.kind) {
-    case Kind::Material:
-    case Kind::Bounded:
-    case Kind::StepFactor: return finite_part(g, n.children[0]);
-    case Kind::Union:
-    case Kind::SmoothUnion: {
-      std::optional<ir::Box3> out;
-      for (ir::NodeId c : n.children)
-        if (auto b = finite_part(g, c)) out = out ? out->united(*b) : *b;
-      return out;
-    }
-    default: return std::nullopt;
-  }
+  const kinds::Description* d = kinds::operation(n.kind);
+  if (!d || !d->fit_children) return std::nullopt;
+  std::optional<ir::Box3> out;
+  for (ir::NodeId c : n.children)
+    if (auto b = finite_part(g, c)) out = out ? out->united(*b) : *b;
+  return out;
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "sdfc/passes/passes.hpp"
+#include "sdfc/kinds/params.hpp"
 
 namespace sdfc::passes {
 
@@ -26,7 +27,7 @@ ir::Module verify(ir::Module m) {
     if (k.arity == -1 && n.children.empty()) fail(where + ": combinator without children");
     for (ir::NodeId c : n.children)
       if (c >= m.graph->size()) fail(where + ": child out of range");
-    if (n.kind == ir::Kind::Material && (n.params[0] < 0 || n.params[0] >= double(m.plan.materials.size())))
+    if (n.kind == ir::Kind::Material && (kinds::material_id(n) < 0 || size_t(kinds::material_id(n)) >= m.plan.materials.size()))
       fail(where + ": material id out of range");
   }
   return m;

@@ -1,4 +1,4 @@
-// Material shares across smooth blends (issue 9): a blended point shows each
+// Material shares across smooth blends: a blended point shows each
 // material in proportion to how much its child shapes the blended distance.
 #include "materials.hpp"
 

@@ -29,18 +29,4 @@ struct Analyses {
   std::optional<RayBounds> ray_bounds;
 };
 
-// Smooth blends whose children's materials are mixed by the blend weight:
-// the polynomial smooth operations and the cubic and exponential blends.
-inline bool mixes_materials(const Node& n) {
-  switch (n.kind) {
-    case Kind::SmoothUnion:
-    case Kind::SmoothIntersection:
-    case Kind::SmoothDifference: return true;
-    case Kind::BlendUnion:
-    case Kind::BlendIntersection:
-    case Kind::BlendDifference: return n.params[0] < 2;  // style: cubic, exponential
-    default: return false;
-  }
-}
-
 }  // namespace sdfc::ir

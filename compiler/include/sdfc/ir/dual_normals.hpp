@@ -8,21 +8,8 @@ namespace sdfc::ir {
 
 inline bool supports_dual_normals(Kind k) {
   if (const kinds::Description* d = kinds::find(k)) return d->dual_normals;
-  switch (k) {
-    case Kind::Translate:
-    case Kind::Rotate:
-    case Kind::Scale:
-    case Kind::Union:
-    case Kind::Intersection:
-    case Kind::Difference:
-    case Kind::SmoothUnion:
-    case Kind::SmoothIntersection:
-    case Kind::SmoothDifference:
-    case Kind::Material:
-    case Kind::StepFactor:
-    case Kind::Bounded: return true;
-    default: return false;
-  }
+  if (const kinds::Description* d = kinds::operation(k)) return d->dual_normals;
+  return false;
 }
 
 inline const char* dual_normal_kinds() {

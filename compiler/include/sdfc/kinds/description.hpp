@@ -9,6 +9,7 @@
 #include <array>
 #include <cstddef>
 #include <cstring>
+#include <functional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -23,6 +24,11 @@ namespace sdfc::kinds {
 
 class Lowering;  // sdfc/kinds/lowering.hpp
 struct Emitter;  // compiler/src/kinds/fractal.hpp: a fractal's node, point and code writer
+class Walker;    // compiler/src/kinds/walker.hpp: the scene walker a node with children writes into
+struct Carried;  // what the walker carries up from a node (distance, material, record)
+class DualWalker;  // compiler/src/kinds/walker.hpp: the walker of render.normals: dual
+struct Dual;     // a node's distance and gradient there
+struct Folding;  // sdfc/kinds/folding.hpp: a node being rebuilt by fold_constants
 using V3 = std::array<double, 3>;
 
 // Proves the generated table saw this file's SDFC_KIND line.
@@ -54,17 +60,17 @@ struct Description {
   ir::Kind kind;
   std::string_view yaml;     // the key a scene writes
   // One geometry node in YAML flow style: the tests render it, docs show it.
-  std::string_view example;
+  std::string_view example = {};
   size_t param_count;        // count_of<P>(): checked against the table row
   // Reads the node's body (a map) and makes its node; kNoNode after an error.
-  ir::NodeId (*lower)(Lowering&);
+  ir::NodeId (*lower)(Lowering&) = nullptr;
   // Bounds, class, Lipschitz constant and cost (infer_properties).
-  ir::Props (*props)(const ir::Node&);
+  ir::Props (*props)(const ir::Node&) = nullptr;
   // The stdlib call's arguments after the point, by parameter name from the
   // table row; "a" stands for ax, ay, az (a vec3). The function is the row's.
-  std::string_view call_args;
+  std::string_view call_args = {};
   // The distance in double (the reference evaluator, the tests' oracle).
-  double (*distance)(const ir::Node&, const V3& p);
+  double (*distance)(const ir::Node&, const V3& p) = nullptr;
   bool dual_normals = false;  // render.normals: dual differentiates it
   // The stdlib function giving distance and gradient (same arguments, then
   // the gradient's address); empty when there is none.
@@ -100,6 +106,35 @@ struct Description {
   // scene, its rays are clipped to that ball too (passes/analyse).
   bool ball_bounds = false;
   // ---- end of the fractal members ----
+
+  // ---- Kinds with children (domain operations, transforms, combinators;
+  // kinds::operations(), not all()): they work on their children's results.
+  // Written by the front end's modifiers and combinators, so they need no
+  // lower, props, distance or stdlib call; the registry requires these three.
+  // Bounds, class, L and cost from the children's: kid(i) is child i's props
+  // as this node sees them (a corrected child is a bound with L = 1).
+  ir::Props (*child_props)(const ir::Graph&, const ir::Node&, const std::function<ir::Props(size_t)>& kid) = nullptr;
+  // The double-precision sample, evaluating the children with reference::evaluate.
+  reference::Sample (*evaluate)(const ir::Graph&, const ir::Node&, const V3& p) = nullptr;
+  // Its statements in the scene walker, which evaluates the children in
+  // whatever the function being written carries (distance, material, trap,
+  // material record); returns the node's value.
+  Carried (*walk)(Walker&, const ir::Node&, const std::string& p) = nullptr;
+  // A smooth combinator whose children's materials mix by their share of the
+  // blended distance: its op_weight_* function; null or empty: none (the
+  // nearer child's material, or the first's).
+  std::string_view (*weight)(const ir::Node&) = nullptr;
+  // render.normals: dual (dual_normals true): its distance and gradient,
+  // from its children's.
+  Dual (*walk_dual)(DualWalker&, const ir::Node&, const std::string& p) = nullptr;
+  // fold_constants: the node made simpler (an identity dropped, nested ones
+  // merged), or kNoNode to keep it as it is.
+  ir::NodeId (*fold)(const Folding&) = nullptr;
+  // camera.fit: where its bounds are unbounded, the union of its children's
+  // finite parts frames it (a union of a fractal and a floor plane frames
+  // the fractal).
+  bool fit_children = false;
+  // ---- end of the members of kinds with children ----
 
   // What the node is, in one line for the docs ("exact", "a bound", ...).
   std::string_view summary = {};

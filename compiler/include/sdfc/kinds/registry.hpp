@@ -8,8 +8,13 @@
 
 namespace sdfc::kinds {
 
+// The kinds a scene writes as a node of its own (primitives and fractals).
 const std::vector<const Description*>& all();           // in kind id order
-const Description* find(ir::Kind k);                    // null: not described
+const Description* find(ir::Kind k);                    // null: not one of all()
+// The described kinds with children (domain operations, transforms,
+// combinators: their child_props, evaluate and walk hooks).
+const std::vector<const Description*>& operations();    // in kind id order
+const Description* operation(ir::Kind k);               // null: not one of operations()
 const Description* find(std::string_view yaml);         // by the key scenes write
 // One argument of the stdlib call: parameter `index`, a real or (width 3) a vec3.
 struct CallArg {

@@ -1,0 +1,114 @@
+// smooth_union, smooth_intersection and smooth_difference: the polynomial
+// smooth minimum and maximum (Quilez), which round the seam within
+// `radius` and mix the children's materials there.
+#include "combinator.hpp"
+
+SDFC_KIND(SmoothUnion,        13, "smooth_union",        Combinator, -1, "radius",                       "op_smooth_union")
+SDFC_KIND(SmoothIntersection, 14, "smooth_intersection", Combinator, -1, "radius",                       "op_smooth_intersection")
+SDFC_KIND(SmoothDifference,   15, "smooth_difference",   Combinator, -1, "radius",                       "op_smooth_difference")
+
+namespace sdfc::kinds {
+namespace {
+using namespace combinator;
+
+struct SmoothP {
+  double radius;
+};
+
+double smin_poly(double a, double b, double k) {
+  double h = std::max(k - std::fabs(a - b), 0.0) / k;
+  return std::min(a, b) - h * h * k / 4;
+}
+double smax_poly(double a, double b, double k) {
+  double h = std::max(k - std::fabs(a - b), 0.0) / k;
+  return std::max(a, b) + h * h * k / 4;
+}
+
+template <Select S>
+ir::Props props(const ir::Graph&, const ir::Node& n, const Kid& kid) {
+  ir::Props p = fold_props(n, kid, S, 2);
+  // Each fold of a smooth union subtracts at most radius/4, so n children
+  // reach at most (n - 1) * radius/4 beyond the union of their bounds.
+  if (S == Select::Nearer && p.bounds.finite())
+    p.bounds = p.bounds.padded(double(n.children.size() - 1) * view<SmoothP>(n).radius * 0.25);
+  return p;
+}
+
+// A difference mixes by the share of -b, B's own distance negated.
+template <Select S>
+Sample evaluate(const ir::Graph& g, const ir::Node& n, const V3& p) {
+  const double k = view<SmoothP>(n).radius;
+  return fold_samples(g, n, p, [k](Sample& acc, const Sample& b) {
+    if (S == Select::Nearer)
+      mix_sample(acc, b, S, b.distance, [k](double x, double y) { return smin_poly(x, y, k); });
+    else
+      mix_sample(acc, b, S, S == Select::First ? -b.distance : b.distance,
+                 [k](double x, double y) { return smax_poly(x, y, k); });
+  });
+}
+
+std::string_view weight(const ir::Node&) { return "op_weight_polynomial"; }
+
+template <Select S>
+Carried walk(Walker& w, const ir::Node& n, const std::string& p) {
+  const std::string fn(ir::info(n.kind).stdlib_function);
+  std::string radius = w.param(n, SDFC_AT(SmoothP, radius));
+  return combine(w, n, p,
+                 {S, [&](auto& d, auto& b) { return fmt::format("{}({}, {}, {})", w.call(fn), d, b, radius); },
+                  weight(n)});
+}
+
+// render.normals: dual: opg_smooth mixes the gradients by the blend's
+// weights; a difference is the intersection with the negated child.
+template <Select S>
+Dual dual(DualWalker& w, const ir::Node& n, const std::string& p) {
+  const std::string k = w.real(view<SmoothP>(n).radius);
+  w.call("opg_smooth");
+  return fold_dual(w, n, p, [&](const Dual& v, const Dual& c) {
+    if (S == Select::Nearer) {
+      w.line(fmt::format("{} = opg_smooth({}, {}, {}, {}, {}, 1.0f);", v.g, v.d, c.d, v.g, c.g, k));
+      w.line(fmt::format("{} = {}({}, {}, {});", v.d, w.call("op_smooth_union"), v.d, c.d, k));
+    } else if (S == Select::Farther) {
+      w.line(fmt::format("{} = opg_smooth({}, {}, {}, {}, {}, -1.0f);", v.g, v.d, c.d, v.g, c.g, k));
+      w.line(fmt::format("{} = {}({}, {}, {});", v.d, w.call("op_smooth_intersection"), v.d, c.d, k));
+    } else {
+      w.line(fmt::format("{} = opg_smooth({}, -{}, {}, v3_scale({}, -1.0f), {}, -1.0f);", v.g, v.d, c.d, v.g, c.g, k));
+      w.line(fmt::format("{} = {}({}, -{}, {});", v.d, w.call("op_smooth_intersection"), v.d, c.d, k));
+    }
+  });
+}
+
+}  // namespace
+
+namespace described {
+extern const Description SmoothUnion{.kind = ir::Kind::SmoothUnion,
+                                     .yaml = "smooth_union",
+                                     .param_count = count_of<SmoothP>(),
+                                     .dual_normals = true,
+                                     .child_props = props<Select::Nearer>,
+                                     .evaluate = evaluate<Select::Nearer>,
+                                     .walk = walk<Select::Nearer>,
+                                     .weight = weight,
+                                     .walk_dual = dual<Select::Nearer>,
+                                     .fit_children = true};
+extern const Description SmoothIntersection{.kind = ir::Kind::SmoothIntersection,
+                                            .yaml = "smooth_intersection",
+                                            .param_count = count_of<SmoothP>(),
+                                            .dual_normals = true,
+                                            .child_props = props<Select::Farther>,
+                                            .evaluate = evaluate<Select::Farther>,
+                                            .walk = walk<Select::Farther>,
+                                            .weight = weight,
+                                            .walk_dual = dual<Select::Farther>};
+extern const Description SmoothDifference{.kind = ir::Kind::SmoothDifference,
+                                          .yaml = "smooth_difference",
+                                          .param_count = count_of<SmoothP>(),
+                                          .dual_normals = true,
+                                          .child_props = props<Select::First>,
+                                          .evaluate = evaluate<Select::First>,
+                                          .walk = walk<Select::First>,
+                                          .weight = weight,
+                                          .walk_dual = dual<Select::First>};
+}
+
+}  // namespace sdfc::kinds

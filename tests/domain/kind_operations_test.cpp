@@ -1,0 +1,83 @@
+// The kinds with children (transforms, domain operations, combinators) are
+// descriptions too: every kind of the table has one, each is whole, and
+// the passes and emitters that used to switch over them follow the hooks.
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "scene_text.hpp"
+#include "sdfc/ir/dual_normals.hpp"
+#include "sdfc/kinds/registry.hpp"
+#include "sdfc/passes/passes.hpp"
+
+namespace sdfc {
+namespace {
+
+TEST(KindOperations, EveryKindOfTheTableIsDescribed) {
+  for (const ir::KindInfo& k : ir::all_kinds()) {
+    const bool leaf = kinds::find(k.kind) != nullptr, op = kinds::operation(k.kind) != nullptr;
+    EXPECT_TRUE(leaf != op) << k.name << (leaf ? " is described twice" : " has no description");
+    // A node with children is an operation; a leaf is a primitive or fractal.
+    EXPECT_EQ(op, k.arity != 0) << k.name;
+  }
+  for (const kinds::Description* d : kinds::operations()) EXPECT_EQ(kinds::operation(d->kind), d);
+}
+
+// A description without one of its hooks fails the start-up check with the
+// kind's name.
+TEST(KindOperations, AnOperationWithoutAHookFailsNamingIt) {
+  ASSERT_GE(kinds::operations().size(), 27u);  // 3 transforms, step_factor, material, bounded, 12 domain operations, 9 combinators
+  for (const kinds::Description* d : kinds::operations()) {
+    const std::string name(ir::info(d->kind).name);
+    EXPECT_NO_THROW(kinds::check(*d)) << name;
+    for (auto drop : {+[](kinds::Description& b) { b.child_props = nullptr; },
+                      +[](kinds::Description& b) { b.evaluate = nullptr; },
+                      +[](kinds::Description& b) { b.walk = nullptr; },
+                      +[](kinds::Description& b) { b.dual_normals = true, b.walk_dual = nullptr; }}) {
+      kinds::Description broken = *d;
+      drop(broken);
+      try {
+        kinds::check(broken);
+        ADD_FAILURE() << name << ": a missing hook passed the check";
+      } catch (const std::logic_error& e) {
+        EXPECT_NE(std::string(e.what()).find("kind '" + name + "'"), std::string::npos) << e.what();
+      }
+    }
+  }
+}
+
+// render.normals: dual accepts exactly the operations that can write their gradient.
+TEST(KindOperations, DualNormalsFollowTheDescriptions) {
+  int dual = 0;
+  for (const kinds::Description* d : kinds::operations()) {
+    EXPECT_EQ(ir::supports_dual_normals(d->kind), d->walk_dual != nullptr) << ir::info(d->kind).name;
+    dual += d->walk_dual != nullptr;
+  }
+  EXPECT_EQ(dual, 12);  // translate, rotate, scale, step_factor, material, bounded and the six unions/intersections/differences
+}
+
+// The fold hooks: identities vanish, nested translations add up, a
+// one-child union is its child.
+std::vector<const ir::Node*> nodes_of(const ir::Module& m, ir::Kind k) {
+  std::vector<const ir::Node*> out;
+  for (ir::NodeId id : m.graph->postorder(m.root))
+    if (m.graph->node(id).kind == k) out.push_back(&m.graph->node(id));
+  return out;
+}
+
+TEST(KindOperations, FoldHooksSimplify) {
+  ir::Module a = passes::fold_constants(test::lower_text("scene: {sphere: {radius: 1}, translate: [0, 0, 0], scale: 1}\n"));
+  EXPECT_TRUE(nodes_of(a, ir::Kind::Translate).empty());
+  EXPECT_TRUE(nodes_of(a, ir::Kind::Scale).empty());
+  ir::Module b = passes::fold_constants(test::lower_text(
+      "scene: {union: [{union: [{sphere: {radius: 1}}], translate: [1, 0, 0]}], translate: [0, 2, 0]}\n"));
+  EXPECT_TRUE(nodes_of(b, ir::Kind::Union).empty());
+  auto t = nodes_of(b, ir::Kind::Translate);
+  ASSERT_EQ(t.size(), 1u);
+  EXPECT_EQ(t[0]->params, (std::vector<double>{1, 2, 0}));
+}
+
+}  // namespace
+}  // namespace sdfc
