@@ -73,6 +73,18 @@ TEST(Cli, UnwritableOutputExitsFourAndLeavesNothing) {
   EXPECT_FALSE(std::filesystem::exists("/nonexistent-dir"));
 }
 
+// A cold kernel build (no sdfc cache, an empty PoCL cache) is where the
+// OpenCL compiler could talk; with -q nothing at all may reach stderr.
+TEST(Cli, QuietColdBuildPrintsNothing) {
+  sdfc::test::ScratchDir dir;
+  Result r = sdfc::test::run_sdfc(
+      "render examples/formulas/pseudo_kleinian.yaml --width 32 --height 18 -q -o " + dir.file("k.png"),
+      "SDFC_KERNEL_CACHE=0 POCL_CACHE_DIR=" + dir.path() + " ");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  EXPECT_TRUE(std::filesystem::exists(dir.file("k.png")));
+}
+
 TEST(Cli, CompileShowsEveryStage) {
   Result ast = sdfc("compile examples/mandelbulb.yaml --emit ast");
   EXPECT_EQ(ast.code, 0);

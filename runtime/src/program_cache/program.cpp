@@ -49,6 +49,13 @@ std::string build_log_of(cl_program program, cl_device_id device) {
   throw BuildError(message, log);
 }
 
+// The options handed to the driver: the caller's plus -w. PoCL's compiler
+// prints "N warnings generated." straight to our stderr, which `-q` cannot
+// silence; errors still reach the build log and the BuildError.
+std::string driver_options(const std::string& options) {
+  return options.empty() ? std::string("-w") : options + " -w";
+}
+
 Program build_from_source(Device& device, const std::string& source, const std::string& options,
                           std::string& log_out) {
   const char* text = source.c_str();
@@ -57,7 +64,8 @@ Program build_from_source(Device& device, const std::string& source, const std::
   ProgramHandle program(clCreateProgramWithSource(device.context(), 1, &text, &length, &status));
   check_cl(status, "clCreateProgramWithSource");
   cl_device_id id = device.id();
-  status = clBuildProgram(program.get(), 1, &id, options.c_str(), nullptr, nullptr);
+  const std::string cl_options = driver_options(options);
+  status = clBuildProgram(program.get(), 1, &id, cl_options.c_str(), nullptr, nullptr);
   log_out = build_log_of(program.get(), id);
   if (status != CL_SUCCESS) throw_build_error(device, status, log_out, source, options);
   return Program(std::move(program));
@@ -74,7 +82,8 @@ std::optional<Program> build_from_binary(Device& device, const std::vector<unsig
   ProgramHandle program(clCreateProgramWithBinary(device.context(), 1, &id, &size, &data,
                                                   &binary_status, &status));
   if (status != CL_SUCCESS || binary_status != CL_SUCCESS) return std::nullopt;
-  if (clBuildProgram(program.get(), 1, &id, options.c_str(), nullptr, nullptr) != CL_SUCCESS) {
+  const std::string cl_options = driver_options(options);
+  if (clBuildProgram(program.get(), 1, &id, cl_options.c_str(), nullptr, nullptr) != CL_SUCCESS) {
     return std::nullopt;
   }
   log_out = build_log_of(program.get(), id);
