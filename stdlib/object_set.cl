@@ -27,7 +27,11 @@ inline real os_item(vec3 p, __global const float* item, __global const float* pr
 // item so far is nearer than the node's box. The box's signed distance is a
 // lower bound of every item inside it (the host grows each box by how far
 // its smooth blend reaches), so the result is the exact minimum over all
-// items, as the unrolled union's. Nearer children are visited first.
+// items, as the unrolled union's. `bound` is the distance of the union's
+// other children: items no nearer cannot change the union, so the walk
+// starts with it as the nearest so far (and returns it where no item is
+// nearer, leaving `mat` 0 there). Nearer children are visited first, and
+// each box is measured once: its distance waits on the stack beside it.
 #define OS_STACK 64
 inline real os_box(vec3 p, __global const float* b)
 {
@@ -35,18 +39,21 @@ inline real os_box(vec3 p, __global const float* b)
                 fmax((real)b[2] - p.z, p.z - (real)b[5]));
     return v3_length(v3_max_s(q, K(0.0f))) + fmin(v3_max_comp(q), K(0.0f));
 }
-inline real os_union(vec3 p, __global const float* s, const int n_nodes, const int n_items, real* mat)
+inline real os_union(vec3 p, __global const float* s, const int n_nodes, const int n_items, const real bound, real* mat)
 {
     __global const float* items = s + 8 * n_nodes;
     __global const float* prims = items + 4 * n_items;
-    real best = (real)(1e30f), m = (real)(0.0f);
+    real best = bound, m = (real)(0.0f);
     int stack[OS_STACK];
+    real box[OS_STACK];
     int top = 0;
-    stack[top++] = 0;
+    stack[top] = 0;
+    box[top++] = os_box(p, s);
     while (top > 0) {
-        const int node = stack[--top];
+        --top;
+        if (!M_ANY(box[top] < best)) continue;
+        const int node = stack[top];
         __global const float* b = s + 8 * node;
-        if (!M_ANY(os_box(p, b) < best)) continue;
         const int first = (int)b[6], count = (int)b[7];
         if (count > 0) {
             for (int i = first; i < first + count; ++i) {
@@ -56,9 +63,12 @@ inline real os_union(vec3 p, __global const float* s, const int n_nodes, const i
             }
         } else {
             const int left = node + 1;
-            const bool left_near = M_ANY(os_box(p, s + 8 * left) < os_box(p, s + 8 * first));
-            stack[top++] = left_near ? first : left;  // the far child waits below the near one
-            stack[top++] = left_near ? left : first;
+            const real dl = os_box(p, s + 8 * left), dr = os_box(p, s + 8 * first);
+            const bool left_near = M_ANY(dl < dr);
+            stack[top] = left_near ? first : left;  // the far child waits below the near one
+            box[top++] = left_near ? dr : dl;
+            stack[top] = left_near ? left : first;
+            box[top++] = left_near ? dl : dr;
         }
     }
     *mat = m;

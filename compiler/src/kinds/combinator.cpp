@@ -74,27 +74,43 @@ void fold_record(Walker& w, const ir::Node& n, const Fold& f, const std::string&
 
 }  // namespace
 
+// A hard union whose last child is an object set (the gather_object_sets
+// pass puts it there) folds the other children first and walks the set
+// with their distance as its cull bound: the same minimum, fewer boxes.
+bool culls_last_child(const Walker& w, const ir::Node& n, const Fold& f) {
+  if (n.kind != ir::Kind::Union || f.select != Select::Nearer || !f.weight.empty() || n.children.size() < 2) return false;
+  const ir::Node& last = w.graph().node(n.children.back());
+  return last.kind == ir::Kind::ObjectSet && !last.props.corrected;
+}
+
 Carried combine(Walker& w, const ir::Node& n, const std::string& p, const Fold& f) {
   const codegen::detail::Literals& lit = w.lit();
+  const bool cull = culls_last_child(w, n, f);
   std::vector<Carried> kids;
-  for (ir::NodeId c : n.children) kids.push_back(w.child(c, p));
+  for (size_t i = 0; i + (cull ? 1 : 0) < n.children.size(); ++i) kids.push_back(w.child(n.children[i], p));
   const bool with_mat = w.tracks_material();
   std::string d = w.var("d"), m = with_mat ? w.var("m") : "";
   w.line(fmt::format("real {} = {};  // {}", d, kids[0].d, w.describe(n)));
   bool track = with_mat;
-  bool any_mat = false;
+  bool any_mat = cull && !w.tracks_trap();  // the set carries its items' materials (no trap)
   for (const auto& k : kids) any_mat = any_mat || k.mat != lit.typed(0);
   if (track && !any_mat) track = false, m = lit.typed(0);
   if (track) w.line(fmt::format("real {} = {};", m, kids[0].mat));
   const bool records = w.carries_records();
   std::string rec = records ? w.var("r") : "";
   if (records) w.line(fmt::format("mat_record {} = {};", rec, kids[0].rec));
-  for (size_t i = 1; i < kids.size(); ++i) {
-    const Carried& k = kids[i];
+  auto fold_in = [&](const Carried& k) {
     if (records) fold_record(w, n, f, rec, d, k);
     if (track && f.select != Select::First)
       w.line(fmt::format("{} = SEL({}, {}, {} {} {});", m, m, k.mat, k.d, f.select == Select::Nearer ? "<" : ">", d));
     w.line(fmt::format("{} = {};", d, f.fold(d, k.d)));
+  };
+  for (size_t i = 1; i < kids.size(); ++i) fold_in(kids[i]);
+  if (cull) {
+    w.cull_bound = d;
+    Carried set = w.child(n.children.back(), p);
+    w.cull_bound.clear();
+    fold_in(set);
   }
   return {d, with_mat ? m : "", rec};
 }

@@ -58,6 +58,11 @@ class Walker {
   virtual const ir::Graph& graph() const = 0;
   virtual const ir::Module& module() const = 0;
 
+  // A union's fold of its other children, set while it walks an object set
+  // as its last child: items no nearer cannot change the union, so the
+  // set's walk culls by it. Empty: no bound.
+  std::string cull_bound;
+
   // Parameter i of n: a literal or its animated expression; param3: a vec3 from i.
   std::string param(const ir::Node& n, size_t i) const { return codegen::detail::param(n, i, lit()); }
   std::string param3(const ir::Node& n, size_t i) const { return codegen::detail::param3(n, i, lit()); }
