@@ -13,6 +13,7 @@
 #include "sdfc/codegen/camera_view.hpp"
 #include "sdfc/compile.hpp"
 #include "sdfc/ir/printer.hpp"
+#include "sdfc/kinds/params.hpp"
 #include "sdfc/kinds/registry.hpp"
 
 namespace sdfc::cli {
@@ -70,7 +71,7 @@ int run_check(const SceneArgs& args) {
     }
     std::string de = ir::de_summary(n);  // fractals: the estimator and what it promises
     if (!de.empty()) note += "  " + de;
-    if (n.kind == ir::Kind::StepFactor) note += fmt::format("  factor {:.3g}", n.params[0]);
+    if (n.kind == ir::Kind::StepFactor) note += fmt::format("  factor {:.3g}", kinds::step_factor(n));
     fmt::print("  {:<20} {:<9} L = {:<6.4g} {}{}\n", ir::info(n.kind).name, ir::to_string(n.props.cls), n.props.lipschitz,
                at, note);
     if (const kinds::Description* d = kinds::find(n.kind); d && d->explain) fmt::print("{}", d->explain(n));

@@ -149,7 +149,8 @@ int run_render(RenderArgs a) {
   eo.linear = format == Format::Exr;
   codegen::EmittedKernel k = codegen::emit_opencl(m, eo);
   if (!a.kernel_file.empty()) k.source = read_kernel_file(a.kernel_file);
-  sdfrt::KernelSpec spec{k.source, k.entry, k.simd_width, k.packet_rows, k.planes, "", k.scene_data, k.environment};
+  sdfrt::KernelSpec spec{.source = k.source, .entry = k.entry, .simd_width = k.simd_width, .packet_rows = k.packet_rows,
+                         .planes = k.planes, .scene_data = k.scene_data, .environment = k.environment};
   // One build serves every frame: time and the camera are frame parameters.
   sdfrt::Renderer renderer(device, spec);
   const auto& bs = renderer.build_stats();

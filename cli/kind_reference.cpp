@@ -75,6 +75,7 @@ void write_kind(std::string& out, const kinds::Description& d) {
   if (name == d.yaml) out += fmt::format("#### `{}`\n", d.yaml);
   else out += fmt::format("#### `{}` (`{}`)\n", d.yaml, name);
   out += fmt::format("![{} {}](images/kinds/{}.png)\n\n", d.yaml, category_word(ir::info(d.kind).category), name);
+  if (!d.written_as.empty()) out += fmt::format("Written as {}. ", d.written_as);
   out += std::string(d.summary);
   if (std::string cls = distance_class(d); !cls.empty()) out += fmt::format(" Distance: {}.", cls);
   out += "\n\n";
@@ -89,6 +90,16 @@ void write_kind(std::string& out, const kinds::Description& d) {
   out += fmt::format("```yaml\nscene: {}\n```\n\n", d.example);
 }
 
+// The kinds of the reference: every kind a scene writes as a node of its
+// own, then every operation with an example (the ones the compiler makes
+// itself, such as a bounding box test, have none).
+std::vector<const kinds::Description*> documented() {
+  std::vector<const kinds::Description*> out = kinds::all();
+  for (const kinds::Description* d : kinds::operations())
+    if (!d->example.empty()) out.push_back(d);
+  return out;
+}
+
 }  // namespace
 
 std::string kind_reference_markdown() {
@@ -98,8 +109,10 @@ std::string kind_reference_markdown() {
       "accept, its distance class and an example with its picture (the example\n"
       "alone, framed by `camera.fit`). A parameter left out takes its default.\n"
       "A primitive's numbers and vec3s may be expressions of `time` (see\n"
-      "[Animation](#animation)) unless their row says they are fixed.\n\n";
-  const auto& all = kinds::all();
+      "[Animation](#animation)) unless their row says they are fixed.\n"
+      "Transforms, domain operations and combinators work on the nodes they\n"
+      "are written on or hold; their pictures show their examples.\n\n";
+  const auto all = documented();
   for (int c = 0; c <= int(ir::Category::Material); ++c) {
     bool heading = false;
     for (const kinds::Description* d : all) {
@@ -115,7 +128,7 @@ std::string kind_reference_markdown() {
 
 std::string kind_list() {
   std::string out;
-  for (const kinds::Description* d : kinds::all())
+  for (const kinds::Description* d : documented())
     out += fmt::format("{}\t{}\t{}\t{}\n", ir::info(d->kind).name, category_word(ir::info(d->kind).category),
                        example_facts(*d).bounded ? "bounded" : "unbounded", d->example);
   return out;

@@ -2,7 +2,7 @@
 //! deps: vec3_ops
 //! class: helper
 // A material's shading parameters as one value, so a smooth blend can mix
-// two of them (issue 9). Only kernels with a smooth blend of differing
+// two of them. Only kernels with a smooth blend of differing
 // materials carry it; the others keep a material id.
 typedef struct
 {

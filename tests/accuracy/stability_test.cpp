@@ -32,7 +32,11 @@ sdfrt::RenderOutputs render(const std::string& yaml, const Tweak& tweak) {
   eo.simd_width = 16;
   eo.aovs = true;
   codegen::EmittedKernel k = codegen::emit_opencl(m, eo);
-  sdfrt::Renderer r(test::device(), sdfrt::KernelSpec{k.source, k.entry, k.simd_width, k.packet_rows, k.planes, ""});
+  sdfrt::Renderer r(test::device(), sdfrt::KernelSpec{.source = k.source,
+                                                      .entry = k.entry,
+                                                      .simd_width = k.simd_width,
+                                                      .packet_rows = k.packet_rows,
+                                                      .planes = k.planes});
   const int w = m.plan.march.width, h = m.plan.march.height;
   sdfrt::FloatImage img = r.render(codegen::frame_params(m.plan, w, h, 0.0), w, h);
   auto take = [&](std::vector<std::string> names, std::vector<std::string> as) {

@@ -1,4 +1,4 @@
-// Issue 9: the primitive catalogue, the domain operations and the blends,
+// The primitive catalogue, the domain operations and the blends,
 // every OpenCL evaluator (SIMD width x precision) against the CPU reference
 // at >= 1000 points per scene, with the Lipschitz correction on and off.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The fractal estimators of issue 3 on every OpenCL evaluator against the
+// The fractal estimators on every OpenCL evaluator against the
 // CPU reference. To keep kernel builds few, each group scene places several
 // fractals side by side in one union; the points are sampled around each
 // member (uniform in its box, dense along rays through its surface, and far

@@ -1,4 +1,4 @@
-// Materials across smooth blends (issue 9): the OpenCL scene_material (the
+// Materials across smooth blends: the OpenCL scene_material (the
 // mixed albedo, specular, shininess and reflectivity) against the CPU
 // reference's evaluate_material at points near the surface, for every
 // smooth kind, nested under modifiers and hard operations.

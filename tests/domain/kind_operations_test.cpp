@@ -49,6 +49,30 @@ TEST(KindOperations, AnOperationWithoutAHookFailsNamingIt) {
   }
 }
 
+// Every operation a scene writes has its entry in the node reference: an
+// example that lowers to a node of its kind, a summary and its parameters.
+// The compiler makes bounded and object_set itself; material nodes come
+// from the `materials` section, which has its own docs.
+TEST(KindOperations, EveryWrittenOperationHasAnExampleOfItsKind) {
+  int documented = 0;
+  for (const kinds::Description* d : kinds::operations()) {
+    const std::string name(ir::info(d->kind).name);
+    if (d->kind == ir::Kind::Bounded || d->kind == ir::Kind::ObjectSet || d->kind == ir::Kind::Material) {
+      EXPECT_TRUE(d->example.empty()) << name << " is not written by scenes";
+      continue;
+    }
+    ASSERT_FALSE(d->example.empty()) << name << " has no example";
+    EXPECT_FALSE(d->summary.empty()) << name;
+    EXPECT_FALSE(d->docs.empty()) << name;
+    ir::Module m = test::lower_text("scene: " + std::string(d->example) + "\n");
+    bool found = false;
+    for (ir::NodeId id : m.graph->postorder(m.root)) found = found || m.graph->node(id).kind == d->kind;
+    EXPECT_TRUE(found) << name << "'s example has no " << name << " node: " << d->example;
+    ++documented;
+  }
+  EXPECT_EQ(documented, int(kinds::operations().size()) - 3);
+}
+
 // render.normals: dual accepts exactly the operations that can write their gradient.
 TEST(KindOperations, DualNormalsFollowTheDescriptions) {
   int dual = 0;

@@ -59,7 +59,11 @@ TraceResult trace_reference(const ir::Module& m, const CameraRays& cam, const V3
 
 sdfrt::FloatImage render(const ir::Module& m, int simd_width) {
   codegen::EmittedKernel k = codegen::emit_opencl(m, {simd_width, false});
-  sdfrt::Renderer renderer(test::device(), sdfrt::KernelSpec{k.source, k.entry, k.simd_width, k.packet_rows, k.planes, ""});
+  sdfrt::Renderer renderer(test::device(), sdfrt::KernelSpec{.source = k.source,
+                                                             .entry = k.entry,
+                                                             .simd_width = k.simd_width,
+                                                             .packet_rows = k.packet_rows,
+                                                             .planes = k.planes});
   const int w = m.plan.march.width, h = m.plan.march.height;
   return renderer.render(codegen::frame_params(m.plan, w, h, 0.0), w, h);
 }

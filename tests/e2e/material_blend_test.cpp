@@ -1,4 +1,4 @@
-// Materials across a smooth union, rendered (issue 9): two differently
+// Materials across a smooth union, rendered: two differently
 // coloured spheres, smoothly united and lit by ambient light only (so a
 // pixel's colour is its albedo), show a mix at the seam and their own pure
 // colours on their far sides; an orbit-trap fractal keeps its palette

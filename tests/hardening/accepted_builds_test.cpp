@@ -1,5 +1,5 @@
 // What `check` accepts builds and renders right; what cannot render right
-// is refused with a message (issue 18, classes 6, 7 and 9).
+// is refused with a message (hostile-input classes 6, 7 and 9).
 #include <gtest/gtest.h>
 
 #include <sdfrt/image_read.hpp>

@@ -1,6 +1,6 @@
 // Frame sequences from the command line: "%%" in a name pattern is one '%',
 // and a --frames range is iterated, never listed, so its memory does not
-// grow with its length (issue 18, classes 5 and 9).
+// grow with its length (hostile-input classes 5 and 9).
 #include <gtest/gtest.h>
 #include <signal.h>
 

@@ -36,7 +36,11 @@ sdfrt::FloatImage render(const ir::Module& m, int simd_width) {
   codegen::EmitOptions eo;
   eo.simd_width = simd_width;
   codegen::EmittedKernel k = codegen::emit_opencl(m, eo);
-  sdfrt::KernelSpec spec{k.source, k.entry, k.simd_width, k.packet_rows, k.planes, ""};
+  sdfrt::KernelSpec spec{.source = k.source,
+                         .entry = k.entry,
+                         .simd_width = k.simd_width,
+                         .packet_rows = k.packet_rows,
+                         .planes = k.planes};
   sdfrt::Renderer r(device(), spec);
   const int w = m.plan.march.width, h = m.plan.march.height;
   return r.render(codegen::frame_params(m.plan, w, h, 0.0), w, h, sdfrt::RenderOptions{});

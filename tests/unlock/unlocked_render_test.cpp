@@ -33,7 +33,11 @@ sdfrt::FloatImage render_with(const ir::Module& m, const std::vector<float>& val
   EXPECT_EQ(k.frame_floats, codegen::kFrameFloats + int(values.size()));
   std::vector<float> frame = codegen::frame_params(m.plan, kWidth, kHeight);
   frame.insert(frame.end(), values.begin(), values.end());
-  sdfrt::Renderer r(device(), sdfrt::KernelSpec{k.source, k.entry, k.simd_width, k.packet_rows, k.planes, ""});
+  sdfrt::Renderer r(device(), sdfrt::KernelSpec{.source = k.source,
+                                                .entry = k.entry,
+                                                .simd_width = k.simd_width,
+                                                .packet_rows = k.packet_rows,
+                                                .planes = k.planes});
   return r.render(frame, kWidth, kHeight);
 }
 

@@ -1,4 +1,4 @@
-// The path integrator (render.integrator: path, issue 24): sdfc_path_hit
+// The path integrator (render.integrator: path): sdfc_path_hit
 // marches one ray of a path and finds its surface, sdfc_path follows a path
 // from the camera: the environment where it leaves the scene, emission where
 // it hits, next-event estimation to every light at each vertex (the

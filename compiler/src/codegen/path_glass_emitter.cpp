@@ -1,4 +1,4 @@
-// Smooth glass in the path integrator (issue 24): at a vertex on a glass
+// Smooth glass in the path integrator: at a vertex on a glass
 // material, Fresnel's exact reflectance chooses between the mirrored and
 // the refracted direction (both delta lobes, so the throughput is kept as
 // it is); a refracted path changes side, and the segment it then marches

@@ -1,4 +1,4 @@
-// The path integrator's per-material values (issue 24): which parts the
+// The path integrator's per-material values: which parts the
 // scene's materials need, and path_surface(), their select chain.
 #include <fmt/format.h>
 

@@ -57,18 +57,19 @@ class ChainReader {
     const std::string what = fmt::format("formula.iterate[{}].{}", index, def->name);
     if (value && !value->is_null() && !value->is_map()) {
       // the shorthand `scale: 2` sets the step's first number
-      if (!def->params.empty() && def->params[0].width == 3 && value->is_seq()) {
+      const StepParam* first = def->params.empty() ? nullptr : &def->params.front();
+      if (first && first->width == 3 && value->is_seq()) {
         // `scale_xyz: [1, 2, 1]` sets its first vec3
-        const StepParam& q = def->params[0];
+        const StepParam& q = *first;
         auto x = r_.vec3(*value, what, Range::closed(q.lo, q.hi));
         st.a.insert(st.a.end(), x.begin(), x.end());
         for (size_t i = 1; i < def->params.size(); ++i) fallback(def->params[i], st, value->loc, what);
-      } else if (def->params.empty() || def->params[0].width != 1) {
+      } else if (!first || first->width != 1) {
         error(value->loc, fmt::format("{}: expected a map of the step's settings, got {}", what, value->kind_name()),
               def->params.empty() ? "this step takes no settings: write '- " + std::string(def->name) + "'" : "");
         return;
       } else {
-        const StepParam& q = def->params[0];
+        const StepParam& q = *first;
         st.a.push_back(r_.number(*value, what, Range::closed(q.lo, q.hi)));
         for (size_t i = 1; i < def->params.size(); ++i) fallback(def->params[i], st, value->loc, what);
       }

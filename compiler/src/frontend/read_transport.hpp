@@ -1,5 +1,5 @@
 #pragma once
-// The path integrator's settings (issue 24): `render.integrator`,
+// The path integrator's settings: `render.integrator`,
 // `render.max_bounces`, `render.firefly_clamp`, and a material's `roughness`,
 // `metalness`, `emission` and `glass` (docs/scene-format.md, "Light transport").
 // The keys are allowed by the readers of `render` and of a material; these

@@ -1,4 +1,4 @@
-// background.sky (issue 24): an analytic daylight sky. Its colours come
+// background.sky: an analytic daylight sky. Its colours come
 // from the sun's elevation and the turbidity here, on the host, so the
 // kernel's shade_sky only blends them: the sun's colour is the light left
 // after Rayleigh extinction (per channel) and haze (grey) along the air

@@ -111,28 +111,58 @@ Carried walk(Walker& w, const ir::Node& n, const std::string& p) {
 
 int blend_style(const ir::Node& blend) { return int(view<BlendP>(blend).style); }
 
+namespace {
+constexpr ParamDoc k_blend_union_docs[] = {
+    {"radius", "number", "", "> 0", "the size of the seam"},
+    {"steps", "integer", "4", "1 to 1000", "columns and stairs only: how many along the seam"},
+    {"children", "list of nodes", "", "at least one", "the shapes"},
+};
+constexpr ParamDoc k_blend_intersection_docs[] = {
+    {"radius", "number", "", "> 0", "the size of the edge"},
+    {"steps", "integer", "4", "1 to 1000", "columns and stairs only: how many along the edge"},
+    {"children", "list of nodes", "", "at least one", "the shapes"},
+};
+constexpr ParamDoc k_blend_difference_docs[] = {
+    {"radius", "number", "", "> 0", "the size of the edge"},
+    {"steps", "integer", "4", "1 to 1000", "columns and stairs only: how many along the edge"},
+    {"children", "list of nodes", "", "at least one", "the shape, then what is cut from it"},
+};
+}  // namespace
+
 namespace described {
 extern const Description BlendUnion{.kind = ir::Kind::BlendUnion,
                                     .yaml = "blend_union",
+                                    .example = "{stairs_union: {radius: 0.3, steps: 4, children: [{box: {size: [1.2, 1.2, 0.3]}}, {cylinder: {radius: 0.25, height: 0.9}, translate: [0, 0, 0.45]}]}}",
                                     .param_count = count_of<BlendP>(),
                                     .child_props = props<Select::Nearer>,
                                     .evaluate = evaluate<Select::Nearer>,
                                     .walk = walk<Select::Nearer>,
-                                    .weight = weight};
+                                    .weight = weight,
+                                    .summary = "A union with a stylised seam: a 45° bevel (chamfer), a quarter-circle fillet (round), round columns or stairs along the seam.",
+                                    .written_as = "`chamfer_union`, `round_union`, `columns_union`, `stairs_union`, or `smooth_union` with `kind: cubic` or `kind: exponential`",
+                                    .docs = k_blend_union_docs};
 extern const Description BlendIntersection{.kind = ir::Kind::BlendIntersection,
                                            .yaml = "blend_intersection",
+                                           .example = "{chamfer_intersection: {radius: 0.15, children: [{sphere: {radius: 0.6}}, {box: {size: [0.9, 0.9, 0.9]}}]}}",
                                            .param_count = count_of<BlendP>(),
                                            .child_props = props<Select::Farther>,
                                            .evaluate = evaluate<Select::Farther>,
                                            .walk = walk<Select::Farther>,
-                                           .weight = weight};
+                                           .weight = weight,
+                                           .summary = "An intersection with a stylised edge, the union's dual.",
+                                           .written_as = "`chamfer_intersection`, `round_intersection`, `columns_intersection`, `stairs_intersection`, or `smooth_intersection` with `kind: cubic` or `kind: exponential`",
+                                           .docs = k_blend_intersection_docs};
 extern const Description BlendDifference{.kind = ir::Kind::BlendDifference,
                                          .yaml = "blend_difference",
+                                         .example = "{columns_difference: {radius: 0.2, steps: 3, children: [{box: {size: [1, 1, 1]}}, {sphere: {radius: 0.6}, translate: [0.45, -0.45, 0.45]}]}}",
                                          .param_count = count_of<BlendP>(),
                                          .child_props = props<Select::First>,
                                          .evaluate = evaluate<Select::First>,
                                          .walk = walk<Select::First>,
-                                         .weight = weight};
+                                         .weight = weight,
+                                         .summary = "A difference with a stylised cut edge.",
+                                         .written_as = "`chamfer_difference`, `round_difference`, `columns_difference`, `stairs_difference`, or `smooth_difference` with `kind: cubic` or `kind: exponential`",
+                                         .docs = k_blend_difference_docs};
 }
 
 }  // namespace sdfc::kinds

@@ -1,6 +1,7 @@
 // box: full sizes in the scene, half extents in the node; rounded edges.
 #include <fmt/format.h>
 
+#include "sdfc/kinds/params.hpp"
 #include "shape_math.hpp"
 
 SDFC_KIND(Box, 1, "box", Primitive, 0, "hx,hy,hz,radius", "sd_box")
@@ -45,6 +46,9 @@ constexpr ParamDoc k_docs[] = {
 };
 
 }  // namespace
+
+std::array<double, 3> box_half_extent(const ir::Node& box) { return view<BoxP>(box).h; }
+double box_edge_radius(const ir::Node& box) { return view<BoxP>(box).radius; }
 
 namespace described {
 extern const Description Box{.kind = ir::Kind::Box,

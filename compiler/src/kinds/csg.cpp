@@ -55,32 +55,53 @@ Dual difference_dual(DualWalker& w, const ir::Node& n, const std::string& p) {
 
 }  // namespace
 
+namespace {
+constexpr ParamDoc k_union_docs[] = {
+    {"union", "list of nodes", "", "at least one", "the shapes"},
+};
+constexpr ParamDoc k_intersection_docs[] = {
+    {"intersection", "list of nodes", "", "at least one", "the shapes"},
+};
+constexpr ParamDoc k_difference_docs[] = {
+    {"difference", "list of nodes", "", "at least one", "the shape, then what is cut from it"},
+};
+}  // namespace
+
 namespace described {
 extern const Description Union{.kind = ir::Kind::Union,
                                .yaml = "union",
+                               .example = "{union: [{sphere: {radius: 0.45}, translate: [-0.3, 0, 0]}, {box: {size: [0.7, 0.7, 0.7]}, translate: [0.3, 0, 0]}]}",
                                .param_count = 0,
                                .dual_normals = true,
                                .child_props = props<Select::Nearer>,
                                .evaluate = evaluate<Select::Nearer>,
                                .walk = union_walk,
                                .walk_dual = union_dual,
-                               .fit_children = true};
+                               .fit_children = true,
+                               .summary = "The shapes together: the minimum of the children's distances. The material is the nearest child's.",
+                               .docs = k_union_docs};
 extern const Description Intersection{.kind = ir::Kind::Intersection,
                                       .yaml = "intersection",
+                                      .example = "{intersection: [{sphere: {radius: 0.6}}, {box: {size: [0.9, 0.9, 0.9]}}]}",
                                       .param_count = 0,
                                       .dual_normals = true,
                                       .child_props = props<Select::Farther>,
                                       .evaluate = evaluate<Select::Farther>,
                                       .walk = intersection_walk,
-                                      .walk_dual = intersection_dual};
+                                      .walk_dual = intersection_dual,
+                                      .summary = "What the shapes share: the maximum of the children's distances. The material is the farthest child's.",
+                                      .docs = k_intersection_docs};
 extern const Description Difference{.kind = ir::Kind::Difference,
                                     .yaml = "difference",
+                                    .example = "{difference: [{box: {size: [1, 1, 1]}}, {sphere: {radius: 0.65}}]}",
                                     .param_count = 0,
                                     .dual_normals = true,
                                     .child_props = props<Select::First>,
                                     .evaluate = evaluate<Select::First>,
                                     .walk = difference_walk,
-                                    .walk_dual = difference_dual};
+                                    .walk_dual = difference_dual,
+                                    .summary = "The first shape with the others cut away; the cut face keeps the first child's material.",
+                                    .docs = k_difference_docs};
 }
 
 }  // namespace sdfc::kinds

@@ -92,13 +92,23 @@ Carried walk(Walker& w, const ir::Node& n, const std::string& p) {
 
 size_t displacement(const ir::Node& displace) { return size_t(view<DisplaceP>(displace).expression); }
 
+namespace {
+constexpr ParamDoc k_displace_docs[] = {
+    {"expr", "expression of x, y, z, time", "", "bounded near the shape", "the displacement"},
+};
+}  // namespace
+
 namespace described {
 extern const Description Displace{.kind = ir::Kind::Displace,
                                   .yaml = "displace",
+                                  .example = "{sphere: {radius: 0.7}, displace: {expr: \"0.05*sin(12*x)*sin(12*y)*sin(12*z)\"}}",
                                   .param_count = count_of<DisplaceP>(),
                                   .child_props = props,
                                   .evaluate = evaluate,
-                                  .walk = walk};
+                                  .walk = walk,
+                                  .summary = "Adds an expression of the point (and time) to the distance. Lipschitz: the expression's gradient is bounded over the node's region and corrected for.",
+                                  .written_as = "`displace: {expr}` on any bounded node",
+                                  .docs = k_displace_docs};
 }
 
 }  // namespace sdfc::kinds

@@ -48,8 +48,8 @@ std::string orbit_call(Emitter& e, std::string fn, const std::string& args, bool
 
 // The escape radius a Mandelbulb's or Juliabulb's estimator iterates to
 // (ir::bulb_estimator_radius), a literal or, for an animated power or
-// bailout, an expression of them (power at 0, bailout at 2 for both).
-std::string bulb_estimator_radius(const Emitter& e);
+// bailout, an expression of them (`power` and `bailout` index Node::params).
+std::string bulb_estimator_radius(const Emitter& e, size_t power, size_t bailout);
 // A power the trig-free path can take: a whole number from 2 up.
 inline bool integer_power(double power) { return power >= 2 && power == std::floor(power); }
 

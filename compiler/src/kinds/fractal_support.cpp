@@ -25,11 +25,12 @@ std::string orbit_call(Emitter& e, std::string fn, const std::string& args, bool
   return e.value == OrbitValue::Escape ? count : e.value == OrbitValue::Smooth ? it : t;
 }
 
-std::string bulb_estimator_radius(const Emitter& e) {
+std::string bulb_estimator_radius(const Emitter& e, size_t power, size_t bailout) {
   const ir::Node& n = e.n;
-  if (!n.animation(0) && !n.animation(2)) return e.real(ir::bulb_estimator_radius(n.params.at(0), n.params.at(2)));
-  return fmt::format("fmax({}, fmin({}, pow({}, {} / fmax({}, {}))))", e.param(2), e.real(64.0), e.real(2.0),
-                     e.real(8.0), e.param(0), e.real(1.0));
+  if (!n.animation(power) && !n.animation(bailout))
+    return e.real(ir::bulb_estimator_radius(n.params.at(power), n.params.at(bailout)));
+  return fmt::format("fmax({}, fmin({}, pow({}, {} / fmax({}, {}))))", e.param(bailout), e.real(64.0), e.real(2.0),
+                     e.real(8.0), e.param(power), e.real(1.0));
 }
 
 double de_method(ValueReader& r, const MapReader& m, std::string_view what, std::initializer_list<ir::DeMethod> methods) {

@@ -15,7 +15,6 @@ struct JuliabulbP {
   V3 c;
 };
 constexpr size_t kPower = SDFC_AT(JuliabulbP, power), kBailout = SDFC_AT(JuliabulbP, bailout);
-static_assert(kPower == 0 && kBailout == 2, "bulb_estimator_radius reads power at 0, bailout at 2");
 
 ir::Props props(const ir::Node& n) {
   auto b = view<JuliabulbP>(n);
@@ -28,9 +27,9 @@ std::string emit(Emitter& e) {
   std::string c = e.vec3(b.c);
   if (integer_power(b.power))
     return fmt::format("{}({}, {}, {}, {}, {}, 1, {})", e.call("de_mandelbulb_int"), e.p, int(b.power),
-                       int(b.iterations), bulb_estimator_radius(e), radius, c);
+                       int(b.iterations), bulb_estimator_radius(e, kPower, kBailout), radius, c);
   return fmt::format("{}({}, {}, {}, {}, {}, {})", e.call("de_juliabulb"), e.p, e.param(kPower), int(b.iterations),
-                     bulb_estimator_radius(e), radius, c);
+                     bulb_estimator_radius(e, kPower, kBailout), radius, c);
 }
 
 std::string emit_orbit(Emitter& e) {
@@ -49,7 +48,7 @@ std::string emit_orbit(Emitter& e) {
 std::string emit_dual(Emitter& e) {
   auto b = view<JuliabulbP>(e.n);
   return fmt::format("{}({}, {}, {}, {}, 1, {})", e.call("gn_mandelbulb"), e.p, e.real(b.power), int(b.iterations),
-                     bulb_estimator_radius(e), e.vec3(b.c));
+                     bulb_estimator_radius(e, kPower, kBailout), e.vec3(b.c));
 }
 
 double distance(const ir::Node& n, const V3& p) {

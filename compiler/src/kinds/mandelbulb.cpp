@@ -16,7 +16,6 @@ struct MandelbulbP {
   double power, iterations, bailout, method;
 };
 constexpr size_t kPower = SDFC_AT(MandelbulbP, power), kBailout = SDFC_AT(MandelbulbP, bailout);
-static_assert(kPower == 0 && kBailout == 2, "bulb_estimator_radius reads power at 0, bailout at 2");
 
 ir::Props props(const ir::Node& n) {
   // The estimator is a bound in practice but not provably; L = 1 assumed.
@@ -43,9 +42,9 @@ std::string emit(Emitter& e) {
                        ir::de_method_name(method));
   if (ipower)  // trig-free: the angles' multiples come from complex powers
     return fmt::format("{}({}, {}, {}, {}, {}, 0, v3_splat(0.0f))", e.call("de_mandelbulb_int"), e.p, ipower,
-                       int(b.iterations), bulb_estimator_radius(e), radius);
+                       int(b.iterations), bulb_estimator_radius(e, kPower, kBailout), radius);
   return fmt::format("{}({}, {}, {}, {}, {})", e.call("de_mandelbulb"), e.p, e.param(kPower), int(b.iterations),
-                     bulb_estimator_radius(e), radius);
+                     bulb_estimator_radius(e, kPower, kBailout), radius);
 }
 
 std::string emit_orbit(Emitter& e) {
@@ -66,7 +65,7 @@ std::string emit_orbit(Emitter& e) {
 std::string emit_dual(Emitter& e) {
   auto b = view<MandelbulbP>(e.n);
   return fmt::format("{}({}, {}, {}, {}, 0, v3_splat(0.0f))", e.call("gn_mandelbulb"), e.p, e.real(b.power),
-                     int(b.iterations), bulb_estimator_radius(e));
+                     int(b.iterations), bulb_estimator_radius(e, kPower, kBailout));
 }
 
 double analytic(const V3& p, double power, int iterations, double bailout) {

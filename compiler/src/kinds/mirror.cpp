@@ -70,19 +70,36 @@ Carried symmetry_walk(Walker& w, const ir::Node& n, const std::string& p) {
 
 }  // namespace
 
+namespace {
+constexpr ParamDoc k_mirror_docs[] = {
+    {"mirror", "x, y, z or a list of them", "", "", "the axes whose planes mirror"},
+};
+constexpr ParamDoc k_symmetry_docs[] = {
+    {"symmetry", "one of tetrahedral\\|octahedral", "", "", "the group of reflections"},
+};
+}  // namespace
+
 namespace described {
 extern const Description Mirror{.kind = ir::Kind::Mirror,
                                 .yaml = "mirror",
+                                .example = "{union: [{sphere: {radius: 0.3}, translate: [0.4, 0.3, 0]}], mirror: [x, y]}",
                                 .param_count = count_of<MirrorP>(),
                                 .child_props = mirror_props,
                                 .evaluate = mirror_evaluate,
-                                .walk = mirror_walk};
+                                .walk = mirror_walk,
+                                .summary = "Folds space across the planes through the origin: the positive half of each axis is mirrored to the negative.",
+                                .written_as = "`mirror: AXIS` or `mirror: [AXES]` on any node",
+                                .docs = k_mirror_docs};
 extern const Description Symmetry{.kind = ir::Kind::Symmetry,
                                   .yaml = "symmetry",
+                                  .example = "{union: [{sphere: {radius: 0.2}, translate: [0.5, 0.2, 0.1]}], symmetry: octahedral}",
                                   .param_count = count_of<SymmetryP>(),
                                   .child_props = symmetry_props,
                                   .evaluate = symmetry_evaluate,
-                                  .walk = symmetry_walk};
+                                  .walk = symmetry_walk,
+                                  .summary = "Reflects the node across the symmetry planes of a tetrahedron or an octahedron.",
+                                  .written_as = "`symmetry: tetrahedral|octahedral` on any bounded node",
+                                  .docs = k_symmetry_docs};
 }
 
 }  // namespace sdfc::kinds

@@ -50,25 +50,49 @@ Carried shell_walk(Walker& w, const ir::Node& n, const std::string& p) {
 
 }  // namespace
 
+namespace {
+constexpr ParamDoc k_round_docs[] = {
+    {"round", "number", "", "> 0", "how far the surface moves out"},
+};
+constexpr ParamDoc k_onion_docs[] = {
+    {"onion", "number or list of numbers", "", "each > 0", "half the wall's thickness"},
+};
+constexpr ParamDoc k_shell_docs[] = {
+    {"shell", "number", "", "> 0", "the wall's thickness"},
+};
+}  // namespace
+
 namespace described {
 extern const Description Round{.kind = ir::Kind::Round,
                                .yaml = "round",
+                               .example = "{box: {size: [0.8, 0.8, 0.8]}, round: 0.1}",
                                .param_count = count_of<OffsetP>(),
                                .child_props = grown_props,
                                .evaluate = offset_evaluate<round_of>,
-                               .walk = round_walk};
+                               .walk = round_walk,
+                               .summary = "Grows the shape by `r`, rounding its edges.",
+                               .written_as = "`round: r` on any node",
+                               .docs = k_round_docs};
 extern const Description Onion{.kind = ir::Kind::Onion,
                                .yaml = "onion",
+                               .example = "{difference: [{sphere: {radius: 0.7}, onion: 0.05}, {box: {size: [1, 1, 1]}, translate: [0.5, -0.5, 0.5]}]}",
                                .param_count = count_of<OffsetP>(),
                                .child_props = grown_props,
                                .evaluate = offset_evaluate<onion_of>,
-                               .walk = onion_walk};
+                               .walk = onion_walk,
+                               .summary = "A wall of 2 × `t` around the surface; a list nests one layer per entry.",
+                               .written_as = "`onion: t` or `onion: [t1, t2, ...]` on any node",
+                               .docs = k_onion_docs};
 extern const Description Shell{.kind = ir::Kind::Shell,
                                .yaml = "shell",
+                               .example = "{difference: [{box: {size: [1, 1, 1]}, shell: 0.06}, {box: {size: [1, 1, 1]}, translate: [0.5, -0.5, 0.5]}]}",
                                .param_count = count_of<OffsetP>(),
                                .child_props = shell_props,
                                .evaluate = offset_evaluate<shell_of>,
-                               .walk = shell_walk};
+                               .walk = shell_walk,
+                               .summary = "Hollows the solid: a wall of thickness `t` inside the surface.",
+                               .written_as = "`shell: t` on any node",
+                               .docs = k_shell_docs};
 }
 
 }  // namespace sdfc::kinds

@@ -151,19 +151,38 @@ Carried polar_walk(Walker& w, const ir::Node& n, const std::string& p) {
 
 }  // namespace
 
+namespace {
+constexpr ParamDoc k_polar_repeat_docs[] = {
+    {"axis", "one of x|y|z", "z", "", "the axis it repeats around"},
+    {"count", "integer", "", "2 to 10000", "how many copies"},
+};
+constexpr ParamDoc k_repeat_docs[] = {
+    {"period", "vec3", "", ">= 0", "the spacing along x, y and z; 0: not repeated along that axis"},
+    {"count", "list of 3 integers", "endless", "each 1 to 100000", "copies per axis"},
+};
+}  // namespace
+
 namespace described {
 extern const Description Repeat{.kind = ir::Kind::Repeat,
                                 .yaml = "repeat",
+                                .example = "{sphere: {radius: 0.2}, repeat: {period: [0.5, 0.5, 0.5], count: [3, 3, 1]}}",
                                 .param_count = count_of<RepeatP>(),
                                 .child_props = repeat_props,
                                 .evaluate = repeat_evaluate,
-                                .walk = repeat_walk};
+                                .walk = repeat_walk,
+                                .summary = "Copies the node on a grid, endless or `count` copies per axis centred on the origin. The child must reach less than one period from its cell's centre.",
+                                .written_as = "`repeat: {period, count}` on any bounded node",
+                                .docs = k_repeat_docs};
 extern const Description PolarRepeat{.kind = ir::Kind::PolarRepeat,
                                      .yaml = "polar_repeat",
+                                     .example = "{union: [{box: {size: [0.15, 0.3, 0.5]}, translate: [0.7, 0, 0]}], polar_repeat: {axis: z, count: 8}}",
                                      .param_count = count_of<PolarRepeatP>(),
                                      .child_props = polar_props,
                                      .evaluate = polar_evaluate,
-                                     .walk = polar_walk};
+                                     .walk = polar_walk,
+                                     .summary = "Copies the node around an axis; the child should stay within its own sector.",
+                                     .written_as = "`polar_repeat: {axis, count}` on any bounded node",
+                                     .docs = k_polar_repeat_docs};
 }
 
 }  // namespace sdfc::kinds

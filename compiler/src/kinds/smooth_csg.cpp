@@ -2,6 +2,7 @@
 // smooth minimum and maximum (Quilez), which round the seam within
 // `radius` and mix the children's materials there.
 #include "combinator.hpp"
+#include "sdfc/kinds/params.hpp"
 
 SDFC_KIND(SmoothUnion,        13, "smooth_union",        Combinator, -1, "radius",                       "op_smooth_union")
 SDFC_KIND(SmoothIntersection, 14, "smooth_intersection", Combinator, -1, "radius",                       "op_smooth_intersection")
@@ -80,9 +81,30 @@ Dual dual(DualWalker& w, const ir::Node& n, const std::string& p) {
 
 }  // namespace
 
+double smooth_radius(const ir::Node& smooth) { return view<SmoothP>(smooth).radius; }
+
+namespace {
+constexpr ParamDoc k_smooth_union_docs[] = {
+    {"radius", "number", "", "> 0", "how far the blend reaches; may be an expression of time"},
+    {"kind", "one of polynomial\\|cubic\\|exponential", "polynomial", "", "the blend's curve (cubic and exponential are `blend_union` nodes)"},
+    {"children", "list of nodes", "", "at least one", "the shapes"},
+};
+constexpr ParamDoc k_smooth_intersection_docs[] = {
+    {"radius", "number", "", "> 0", "how far the blend reaches; may be an expression of time"},
+    {"kind", "one of polynomial\\|cubic\\|exponential", "polynomial", "", "the blend's curve"},
+    {"children", "list of nodes", "", "at least one", "the shapes"},
+};
+constexpr ParamDoc k_smooth_difference_docs[] = {
+    {"radius", "number", "", "> 0", "how far the blend reaches; may be an expression of time"},
+    {"kind", "one of polynomial\\|cubic\\|exponential", "polynomial", "", "the blend's curve"},
+    {"children", "list of nodes", "", "at least one", "the shape, then what is cut from it"},
+};
+}  // namespace
+
 namespace described {
 extern const Description SmoothUnion{.kind = ir::Kind::SmoothUnion,
                                      .yaml = "smooth_union",
+                                     .example = "{smooth_union: {radius: 0.25, children: [{sphere: {radius: 0.45}, translate: [-0.35, 0, 0]}, {sphere: {radius: 0.35}, translate: [0.35, 0, 0.1]}]}}",
                                      .param_count = count_of<SmoothP>(),
                                      .dual_normals = true,
                                      .child_props = props<Select::Nearer>,
@@ -90,25 +112,33 @@ extern const Description SmoothUnion{.kind = ir::Kind::SmoothUnion,
                                      .walk = walk<Select::Nearer>,
                                      .weight = weight,
                                      .walk_dual = dual<Select::Nearer>,
-                                     .fit_children = true};
+                                     .fit_children = true,
+                                     .summary = "A union whose seams blend within `radius` (a polynomial smooth minimum); materials mix by each child's share of the blend.",
+                                     .docs = k_smooth_union_docs};
 extern const Description SmoothIntersection{.kind = ir::Kind::SmoothIntersection,
                                             .yaml = "smooth_intersection",
+                                            .example = "{smooth_intersection: {radius: 0.15, children: [{sphere: {radius: 0.6}}, {box: {size: [0.9, 0.9, 0.9]}}]}}",
                                             .param_count = count_of<SmoothP>(),
                                             .dual_normals = true,
                                             .child_props = props<Select::Farther>,
                                             .evaluate = evaluate<Select::Farther>,
                                             .walk = walk<Select::Farther>,
                                             .weight = weight,
-                                            .walk_dual = dual<Select::Farther>};
+                                            .walk_dual = dual<Select::Farther>,
+                                            .summary = "An intersection whose edges are rounded within `radius`.",
+                                            .docs = k_smooth_intersection_docs};
 extern const Description SmoothDifference{.kind = ir::Kind::SmoothDifference,
                                           .yaml = "smooth_difference",
+                                          .example = "{smooth_difference: {radius: 0.1, children: [{box: {size: [1, 1, 1]}}, {sphere: {radius: 0.65}}]}}",
                                           .param_count = count_of<SmoothP>(),
                                           .dual_normals = true,
                                           .child_props = props<Select::First>,
                                           .evaluate = evaluate<Select::First>,
                                           .walk = walk<Select::First>,
                                           .weight = weight,
-                                          .walk_dual = dual<Select::First>};
+                                          .walk_dual = dual<Select::First>,
+                                          .summary = "A difference whose cut edges are rounded within `radius`; the cut face takes the second child's material.",
+                                          .docs = k_smooth_difference_docs};
 }
 
 }  // namespace sdfc::kinds

@@ -1,4 +1,5 @@
 // sphere: centred at the origin.
+#include "sdfc/kinds/params.hpp"
 #include "shape_math.hpp"
 
 SDFC_KIND(Sphere, 0, "sphere", Primitive, 0, "radius", "sd_sphere")
@@ -27,6 +28,8 @@ constexpr ParamDoc k_docs[] = {
 };
 
 }  // namespace
+
+double sphere_radius(const ir::Node& sphere) { return view<SphereP>(sphere).radius; }
 
 namespace described {
 extern const Description Sphere{.kind = ir::Kind::Sphere,

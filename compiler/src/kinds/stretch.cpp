@@ -65,19 +65,36 @@ Carried scale_xyz_walk(Walker& w, const ir::Node& n, const std::string& p) {
 
 }  // namespace
 
+namespace {
+constexpr ParamDoc k_scale_x_y_z_docs[] = {
+    {"scale", "vec3", "", "each > 0, at most 10000", "the factors along x, y and z"},
+};
+constexpr ParamDoc k_elongate_docs[] = {
+    {"elongate", "vec3", "", ">= 0", "the total stretch along x, y and z"},
+};
+}  // namespace
+
 namespace described {
 extern const Description Elongate{.kind = ir::Kind::Elongate,
                                   .yaml = "elongate",
+                                  .example = "{sphere: {radius: 0.35}, elongate: [0.8, 0, 0.4]}",
                                   .param_count = count_of<ElongateP>(),
                                   .child_props = elongate_props,
                                   .evaluate = elongate_evaluate,
-                                  .walk = elongate_walk};
+                                  .walk = elongate_walk,
+                                  .summary = "Pulls the node apart at its centre along each axis, filling the gap with its cross-section.",
+                                  .written_as = "`elongate: [x, y, z]` on any node",
+                                  .docs = k_elongate_docs};
 extern const Description ScaleXYZ{.kind = ir::Kind::ScaleXYZ,
                                   .yaml = "scale_xyz",
+                                  .example = "{sphere: {radius: 0.5}, scale: [1.6, 1, 0.6]}",
                                   .param_count = count_of<ScaleXYZP>(),
                                   .child_props = scale_xyz_props,
                                   .evaluate = scale_xyz_evaluate,
-                                  .walk = scale_xyz_walk};
+                                  .walk = scale_xyz_walk,
+                                  .summary = "Scales the node by a factor per axis; the distance is multiplied by the smallest factor, a bound.",
+                                  .written_as = "`scale: [sx, sy, sz]` on any node",
+                                  .docs = k_scale_x_y_z_docs};
 }
 
 }  // namespace sdfc::kinds

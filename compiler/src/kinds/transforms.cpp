@@ -2,6 +2,7 @@
 // scale (the distance scaled back), and the fudge factor on the distance.
 #include "domain_op.hpp"
 #include "sdfc/kinds/folding.hpp"
+#include "sdfc/kinds/params.hpp"
 
 SDFC_KIND(Translate,          7, "translate",           Transform,  1, "x,y,z",                         "")
 SDFC_KIND(Rotate,             8, "rotate",              Transform,  1, "m00,m01,m02,m10,m11,m12,m20,m21,m22", "")
@@ -44,11 +45,12 @@ Carried translate_walk(Walker& w, const ir::Node& n, const std::string& p) {
 
 // An identity vanishes; nested translations add up.
 ir::NodeId translate_fold(const Folding& f) {
-  const auto& t = f.params;
+  const V3 t = view<TranslateP>(f.params).by;
   if (t[0] == 0 && t[1] == 0 && t[2] == 0) return f.kids[0];
   if (!f.merge || f.child(0).kind != ir::Kind::Translate) return ir::kNoNode;
   const ir::Node& c = f.child(0);
-  return f.again({t[0] + c.params[0], t[1] + c.params[1], t[2] + c.params[2]}, c.children);
+  const V3 u = view<TranslateP>(c).by;
+  return f.again(params_of(TranslateP{{t[0] + u[0], t[1] + u[1], t[2] + u[2]}}), c.children);
 }
 Dual translate_dual(DualWalker& w, const ir::Node& n, const std::string& p) {
   const V3 t = view<TranslateP>(n).by;
@@ -143,9 +145,10 @@ Carried scale_walk(Walker& w, const ir::Node& n, const std::string& p) {
 }
 
 ir::NodeId scale_fold(const Folding& f) {
-  if (f.params[0] == 1) return f.kids[0];
+  const double s = view<ScaleP>(f.params).s;
+  if (s == 1) return f.kids[0];
   if (!f.merge || f.child(0).kind != ir::Kind::Scale) return ir::kNoNode;
-  return f.again({f.params[0] * f.child(0).params[0]}, f.child(0).children);
+  return f.again(params_of(ScaleP{s * view<ScaleP>(f.child(0)).s}), f.child(0).children);
 }
 // d(p) = s d_c(p / s): the gradient is the child's.
 Dual scale_dual(DualWalker& w, const ir::Node& n, const std::string& p) {
@@ -188,43 +191,79 @@ Dual step_dual(DualWalker& w, const ir::Node& n, const std::string& p) {
 
 }  // namespace
 
+std::array<double, 3> translation(const ir::Node& translate) { return view<TranslateP>(translate).by; }
+double scale_factor(const std::vector<double>& scale_params) { return view<ScaleP>(scale_params).s; }
+double step_factor(const ir::Node& step) { return view<StepFactorP>(step).factor; }
+
+namespace {
+constexpr ParamDoc k_translate_docs[] = {
+    {"translate", "vec3", "", "", "the offset; each component may be an expression of time"},
+};
+constexpr ParamDoc k_rotate_docs[] = {
+    {"axis", "vec3", "", "not zero", "the axis (any length)"},
+    {"degrees", "number", "", "-36000 to 36000", "the angle, counter-clockwise looking down the axis; may be an expression of time"},
+};
+constexpr ParamDoc k_scale_docs[] = {
+    {"scale", "number", "", "> 0, at most 10000", "the factor; may be an expression of time"},
+};
+constexpr ParamDoc k_step_factor_docs[] = {
+    {"step_factor", "number", "the fractal's own (1 for other nodes)", "> 0, at most 2", "the factor on this node's distance"},
+};
+}  // namespace
+
 namespace described {
 extern const Description Translate{.kind = ir::Kind::Translate,
                                    .yaml = "translate",
+                                   .example = "{union: [{sphere: {radius: 0.15}}, {box: {size: [0.5, 0.5, 0.5]}, translate: [0.7, 0, 0.3]}]}",
                                    .param_count = count_of<TranslateP>(),
                                    .dual_normals = true,
                                    .child_props = translate_props,
                                    .evaluate = translate_evaluate,
                                    .walk = translate_walk,
                                    .walk_dual = translate_dual,
-                                   .fold = translate_fold};
+                                   .fold = translate_fold,
+                                   .summary = "Moves the node.",
+                                   .written_as = "`translate: [x, y, z]` on any node",
+                                   .docs = k_translate_docs};
 extern const Description Rotate{.kind = ir::Kind::Rotate,
                                 .yaml = "rotate",
+                                .example = "{box: {size: [1, 0.5, 0.3]}, rotate: {axis: [0, 0, 1], degrees: 30}}",
                                 .param_count = count_of<RotateP>(),
                                 .dual_normals = true,
                                 .child_props = rotate_props,
                                 .evaluate = rotate_evaluate,
                                 .walk = rotate_walk,
                                 .walk_dual = rotate_dual,
-                                .fold = rotate_fold};
+                                .fold = rotate_fold,
+                                .summary = "Turns the node about an axis through the origin.",
+                                .written_as = "`rotate: {axis: [x, y, z], degrees: a}` or `rotate: [rx, ry, rz]` on any node",
+                                .docs = k_rotate_docs};
 extern const Description Scale{.kind = ir::Kind::Scale,
                                .yaml = "scale",
+                               .example = "{torus: {major_radius: 0.5, minor_radius: 0.15}, scale: 1.5}",
                                .param_count = count_of<ScaleP>(),
                                .dual_normals = true,
                                .child_props = scale_props,
                                .evaluate = scale_evaluate,
                                .walk = scale_walk,
                                .walk_dual = scale_dual,
-                               .fold = scale_fold};
+                               .fold = scale_fold,
+                               .summary = "Scales the node uniformly; the distance is scaled with it, so it stays exact.",
+                               .written_as = "`scale: s` on any node",
+                               .docs = k_scale_docs};
 extern const Description StepFactor{.kind = ir::Kind::StepFactor,
                                     .yaml = "step_factor",
+                                    .example = "{mandelbulb: {power: 8}, step_factor: 0.8}",
                                     .param_count = count_of<StepFactorP>(),
                                     .dual_normals = true,
                                     .child_props = step_props,
                                     .evaluate = step_evaluate,
                                     .walk = step_walk,
                                     .walk_dual = step_dual,
-                                    .fit_children = true};
+                                    .fit_children = true,
+                                    .summary = "The node's distance times `f`: below 1 it makes an overshooting estimator safe, at the cost of more steps.",
+                                    .written_as = "`step_factor: f` on any node",
+                                    .docs = k_step_factor_docs};
 }
 
 }  // namespace sdfc::kinds

@@ -71,19 +71,38 @@ Carried bend_walk(Walker& w, const ir::Node& n, const std::string& p) { return t
 
 }  // namespace
 
+namespace {
+constexpr ParamDoc k_twist_docs[] = {
+    {"axis", "one of x|y|z", "z", "", "the axis it twists about"},
+    {"rate", "number", "", "-1000 to 1000", "radians per unit along the axis"},
+};
+constexpr ParamDoc k_bend_docs[] = {
+    {"axis", "one of x|y|z", "z", "", "the axis of the bar"},
+    {"rate", "number", "", "-1000 to 1000", "the curvature: radians per unit along the axis"},
+};
+}  // namespace
+
 namespace described {
 extern const Description Twist{.kind = ir::Kind::Twist,
                                .yaml = "twist",
+                               .example = "{box: {size: [0.5, 0.5, 1.6]}, twist: {axis: z, rate: 1.5}}",
                                .param_count = count_of<TurnP>(),
                                .child_props = twist_props,
                                .evaluate = twist_evaluate,
-                               .walk = twist_walk};
+                               .walk = twist_walk,
+                               .summary = "Turns each slice across the axis by `rate` radians per unit along it. Lipschitz: corrected where it is steeper than 1.",
+                               .written_as = "`twist: {axis, rate}` on any bounded node",
+                               .docs = k_twist_docs};
 extern const Description Bend{.kind = ir::Kind::Bend,
                               .yaml = "bend",
+                              .example = "{box: {size: [1.6, 0.3, 0.3]}, bend: {axis: x, rate: 0.6}}",
                               .param_count = count_of<TurnP>(),
                               .child_props = bend_props,
                               .evaluate = bend_evaluate,
-                              .walk = bend_walk};
+                              .walk = bend_walk,
+                              .summary = "Bends a bar along `axis` towards the next axis (x towards y, y towards z, z towards x). Lipschitz: corrected where it is steeper than 1.",
+                              .written_as = "`bend: {axis, rate}` on any bounded node",
+                              .docs = k_bend_docs};
 }
 
 }  // namespace sdfc::kinds

@@ -10,6 +10,7 @@
 #include <unordered_map>
 
 #include "rewrite.hpp"
+#include "sdfc/kinds/params.hpp"
 #include "sdfc/passes/passes.hpp"
 
 namespace sdfc::passes {
@@ -68,7 +69,7 @@ NodeId canon(ir::Builder& b, Kind k, std::vector<double> params, std::vector<Nod
     if (c.kind == Kind::Translate && (k == Kind::Rotate || k == Kind::Scale)) {
       std::vector<double> t = c.params;
       if (k == Kind::Rotate) t = rotate_vec(params, t);
-      else for (double& x : t) x *= params[0];
+      else for (double& x : t) x *= kinds::scale_factor(params);
       NodeId inner = canon(b, k, params, c.children, loc, anim);
       return detail::fold_node(b, Kind::Translate, t, {inner}, c.loc);
     }

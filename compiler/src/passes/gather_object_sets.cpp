@@ -15,6 +15,7 @@
 
 #include "rewrite.hpp"
 #include "sdfc/ir/object_set.hpp"
+#include "sdfc/kinds/params.hpp"
 #include "sdfc/passes/passes.hpp"
 
 namespace sdfc::passes {
@@ -34,17 +35,17 @@ const ir::Node& unboxed(const ir::Graph& g, const ir::Node& n) {
 std::optional<os::Prim> primitive(const ir::Graph& g, const ir::Node& top, int& material) {
   const ir::Node* n = &top;
   if (n->animated()) return std::nullopt;
-  if (n->kind == Kind::Material) material = int(n->params[0]), n = &g.node(n->children[0]);
+  if (n->kind == Kind::Material) material = kinds::material_id(*n), n = &g.node(n->children[0]);
   os::Prim p;
   if (n->animated()) return std::nullopt;
   if (n->kind == Kind::Translate) {
-    p.center = {n->params[0], n->params[1], n->params[2]};
+    p.center = kinds::translation(*n);
     n = &g.node(n->children[0]);
   }
   if (n->animated() || n->props.corrected) return std::nullopt;
-  if (n->kind == Kind::Sphere) p.type = os::kSphere, p.size = {n->params[0], 0, 0};
+  if (n->kind == Kind::Sphere) p.type = os::kSphere, p.size = {kinds::sphere_radius(*n), 0, 0};
   else if (n->kind == Kind::Box)
-    p.type = os::kBox, p.size = {n->params[0], n->params[1], n->params[2]}, p.edge = n->params[3];
+    p.type = os::kBox, p.size = kinds::box_half_extent(*n), p.edge = kinds::box_edge_radius(*n);
   else
     return std::nullopt;
   return p;
@@ -57,7 +58,7 @@ std::optional<os::Item> item(const ir::Graph& g, const ir::Node& child) {
   os::Item it;
   if (n->animated()) return std::nullopt;
   if (n->kind == Kind::Material && g.node(n->children[0]).kind == Kind::SmoothUnion) {
-    it.material = int(n->params[0]);
+    it.material = kinds::material_id(*n);
     n = &unboxed(g, g.node(n->children[0]));
   }
   if (n->kind != Kind::SmoothUnion) {
@@ -66,8 +67,8 @@ std::optional<os::Item> item(const ir::Graph& g, const ir::Node& child) {
     it.prims = {*p};
     return it;
   }
-  if (n->animated() || n->props.corrected || !(n->params[0] > 0)) return std::nullopt;
-  it.blend = n->params[0];
+  if (n->animated() || n->props.corrected || !(kinds::smooth_radius(*n) > 0)) return std::nullopt;
+  it.blend = kinds::smooth_radius(*n);
   std::optional<int> shown;
   for (ir::NodeId c : n->children) {
     int m = it.material;

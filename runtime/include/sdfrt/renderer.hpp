@@ -25,19 +25,20 @@ namespace sdfrt {
 
 constexpr int kMaxImageSide = 16384;
 
+// Built with designated initialisers; every field has a default.
 struct KernelSpec {
-  std::string source;
+  std::string source = {};
   std::string entry = "sdfc_render";
   int simd_width = 1;
   int packet_rows = 1;              // pixel rows per packet; divides simd_width
-  std::vector<std::string> planes;  // e.g. {"r","g","b","depth"}
-  std::string build_options;
+  std::vector<std::string> planes = {};  // e.g. {"r","g","b","depth"}
+  std::string build_options = {};
   // Numbers the kernel reads after the frame block it is given (the
   // compiler's object sets): uploaded with the first frame, behind it.
   std::vector<float> scene_data = {};
   // An environment map's buffer (background.map): uploaded once, passed as
   // the kernel's tenth argument `envmap`. Null: the kernel has nine.
-  std::shared_ptr<const std::vector<float>> environment;
+  std::shared_ptr<const std::vector<float>> environment = {};
 };
 
 struct RenderOptions {

@@ -54,7 +54,8 @@ SceneSession::Built SceneSession::build(sdfrt::Device& device, const SceneOption
   eo.simd_width = options.simd_width;
   eo.aovs = true;
   codegen::EmittedKernel k = codegen::emit_opencl(*m, eo);
-  sdfrt::KernelSpec spec{k.source, k.entry, k.simd_width, k.packet_rows, k.planes, "", k.scene_data, k.environment};
+  sdfrt::KernelSpec spec{.source = k.source, .entry = k.entry, .simd_width = k.simd_width, .packet_rows = k.packet_rows,
+                         .planes = k.planes, .scene_data = k.scene_data, .environment = k.environment};
   b.renderer = std::make_unique<sdfrt::Renderer>(device, spec);
   b.module = std::move(m);
   b.options = options;

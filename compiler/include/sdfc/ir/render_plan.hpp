@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "sdfc/ir/background.hpp"
 #include "sdfc/ir/transport.hpp"
 #include "sdfc/support/diagnostics.hpp"
 
@@ -59,7 +60,7 @@ struct MarchSettings {
   double hit_epsilon = 0.5;  // in pixels: hit when d < hit_epsilon * t * pixel_angle
   double max_distance = 50;
   double step_factor = 1.0;
-  bool lipschitz_correction = true;  // divide subtrees with L > 1 by L (issue 9)
+  bool lipschitz_correction = true;  // divide subtrees with L > 1 by L
   double gamma = 2.2;
   NormalMethod normals = NormalMethod::Tetrahedral;
   double normal_step = 0.5;  // finite-difference normal step, in pixel footprints at the hit
@@ -83,7 +84,7 @@ struct MarchSettings {
   enum class ToneMapping { Clamp, Reinhard, Aces } tone_mapping = ToneMapping::Clamp;
 };
 
-// The reference render (sdfc render --reference, issue 6): the same view,
+// The reference render (sdfc render --reference): the same view,
 // slow but trustworthy: double precision, a small hit epsilon (in pixel
 // footprints), 20000 steps of half the distance, every hit bisected.
 // With grid > 1 it traces a grid x grid stratified grid of rays per pixel
@@ -112,42 +113,6 @@ inline void make_reference(MarchSettings& s, double hit_epsilon = kReferenceHitE
   s.normal_step_floor = 1e-12;
   s.dither = false;
 }
-
-// An analytic daylight sky (issue 24, `background: {sky: ...}`): colours
-// derived on the host from the sun's elevation and the turbidity
-// (sky_model.cpp); the sun itself is a directional light in `lights`.
-struct Sky {
-  bool enabled = false;
-  Vec3d sun_direction{0.4, -0.3, 0.6};  // towards the sun (unit)
-  double turbidity = 3;                 // 2 (clear) ... 10 (hazy)
-  double sun_intensity = 2.5;
-  Vec3d zenith{}, horizon{}, ground{}, glow{};  // derived
-  double glow_power = 8;                        // derived: the halo's falloff
-};
-
-// An equirectangular environment map (issue 24, `background: {map: ...}`),
-// lighting the path integrator. The pixels and their sampling tables are
-// loaded by the front end (environment_map.cpp) and reach the kernel as a
-// buffer argument; the file name never does.
-struct EnvironmentMap {
-  bool enabled = false;
-  std::string file;         // as the scene wrote it, for messages
-  double rotation = 0;      // degrees about the up axis, counter-clockwise seen from above
-  double intensity = 1;     // scales the map's values
-  bool visible = true;      // camera rays see the map; false: they see top/bottom
-  bool importance = true;   // sampling: importance (luminance x sin theta) or uniform
-  int width = 0, height = 0;
-  // rgb (width x height, top row first, times intensity), then the marginal
-  // CDF over rows (height + 1), then one CDF per row (width + 1 each).
-  std::shared_ptr<const std::vector<float>> data;
-};
-
-struct Background {
-  Vec3d top{0.45, 0.55, 0.7};
-  Vec3d bottom{0.15, 0.17, 0.22};
-  Sky sky;
-  EnvironmentMap map;
-};
 
 enum class LightKind { Directional, Point, Ambient };
 
@@ -202,7 +167,7 @@ struct MaterialDef {
   Vec3d color{0.8, 0.8, 0.8};
   double specular = 0.2;
   double shininess = 32;
-  // Orbit-trap colour (issue 3): at the hit, the fractal's orbit trap picks a
+  // Orbit-trap colour: at the hit, the fractal's orbit trap picks a
   // colour from the palette, mixed into `color` by trap_mix. Empty: none.
   std::vector<Vec3d> trap_palette;
   double trap_mix = 0.0;
@@ -243,7 +208,7 @@ struct MaterialDef {
     return false;
   }
   double reflectivity = 0;  // reflectance at normal incidence (Fresnel-Schlick R0)
-  // The path integrator's surface (issue 24): a GGX lobe when `glossy`
+  // The path integrator's surface: a GGX lobe when `glossy`
   // (roughness or metalness given), light emitted by the surface.
   bool glossy = false;
   double roughness = 0.5, metalness = 0;

@@ -1,5 +1,5 @@
 #pragma once
-// How light travels in a render (issue 24): the direct integrator (one
+// How light travels in a render: the direct integrator (one
 // shading of the first hit, the effects, mirror reflections), or a
 // unidirectional path tracer over the distance field. Kept apart from the
 // march settings: only the path integrator reads the rest.

@@ -38,12 +38,14 @@ using V3 = std::array<double, 3>;
 // A kind's parameters as a struct of named doubles and V3s, in the order
 // of Node::params: view<P>(n) reads them, params_of(p) writes them.
 template <class P>
-P view(const ir::Node& n) {
+P view(const std::vector<double>& params) {
   static_assert(std::is_trivially_copyable_v<P> && sizeof(P) % sizeof(double) == 0);
   P p{};
-  std::memcpy(&p, n.params.data(), std::min(sizeof(P), n.params.size() * sizeof(double)));
+  std::memcpy(&p, params.data(), std::min(sizeof(P), params.size() * sizeof(double)));
   return p;
 }
+template <class P>
+P view(const ir::Node& n) { return view<P>(n.params); }
 template <class P>
 std::vector<double> params_of(const P& p) {
   std::vector<double> v(sizeof(P) / sizeof(double));
@@ -138,6 +140,9 @@ struct Description {
 
   // What the node is, in one line for the docs ("exact", "a bound", ...).
   std::string_view summary = {};
+  // How a scene writes it, when that is not `yaml: {...}` (a modifier such
+  // as `translate: [x, y, z]`, or several keys lowering to this kind).
+  std::string_view written_as = {};
   // Its parameters for the docs, in the order a scene usually writes them.
   std::span<const ParamDoc> docs = {};
   // What `sdfc check` prints under the node (a formula's chain and its

@@ -16,7 +16,7 @@ using Vec3 = std::array<double, 3>;
 struct Sample {
   double distance;
   int material;  // material id of the closest surface (0 = default)
-  // Smooth blends (issue 9): the share of each material (id, weight, summing
+  // Smooth blends: the share of each material (id, weight, summing
   // to 1) at this point; empty means all of `material`. Id 0 is a part no
   // material node has claimed yet, as for `material`.
   std::vector<std::pair<int, double>> shares = {};
