@@ -83,7 +83,9 @@ void write_kind(std::string& out, const kinds::Description& d) {
     out += "| parameter | type | default | range | meaning |\n|---|---|---|---|---|\n";
     for (const kinds::ParamDoc& p : d.docs)
       out += fmt::format("| `{}` | {} | {} | {} | {} |\n", p.name, cell(p.type),
-                         p.fallback.empty() ? "required" : fmt::format("`{}`", p.fallback), cell(p.range),
+                         p.fallback.empty()      ? "required"
+                         : p.fallback[0] == '(' ? std::string(p.fallback.substr(1, p.fallback.size() - 2))
+                                                 : fmt::format("`{}`", p.fallback), cell(p.range),
                          cell(p.what));
     out += "\n";
   }

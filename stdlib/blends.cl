@@ -1,3 +1,14 @@
+//! fn op_blend_polynomial
+//! class: bound
+// Polynomial smooth minimum (Quilez): blends within k; never above
+// min(a, b), Lipschitz <= 1. Smooth intersections and differences are
+// -op_blend_polynomial(-a, -b, k) and -op_blend_polynomial(-a, b, k).
+inline real op_blend_polynomial(real a, real b, real k)
+{
+    real h = fmax(k - fabs(a - b), K(0.0f)) / k;
+    return fmin(a, b) - h * h * k * 0.25f;
+}
+
 //! fn op_blend_cubic
 //! class: bound
 // Cubic polynomial smooth minimum (Quilez): C2-smooth, blends within k;

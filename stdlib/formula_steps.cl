@@ -1,10 +1,10 @@
-//! fn formula_sphere_fold
+//! fn fold_sphere
 //! deps: vec3_ops
 //! class: helper
 // A formula's sphere fold with the scalar derivative: scale by
 // fixed_r2/min_r2 inside min_radius, invert in the fixed sphere between the
 // radii; *dr takes the factor.
-inline vec3 formula_sphere_fold(vec3 z, real min_r2, real fixed_r2, real* dr)
+inline vec3 fold_sphere(vec3 z, real min_r2, real fixed_r2, real* dr)
 {
     real r2 = v3_dot(z, z);
     real f = SEL((real)(1.0f), fixed_r2 / fmax(r2, K(1e-30f)), r2 < fixed_r2);
@@ -13,12 +13,12 @@ inline vec3 formula_sphere_fold(vec3 z, real min_r2, real fixed_r2, real* dr)
     return v3_scale(z, f);
 }
 
-//! fn formula_sphere_fold_j
+//! fn fold_sphere_j
 //! deps: vec3_ops
 //! class: helper
 // The sphere fold on z and the Jacobian's columns: the inner ball scales
 // them, the inversion applies its derivative f (J - 2 z (z.J) / r^2).
-inline void formula_sphere_fold_j(vec3* z, vec3* ja, vec3* jb, vec3* jc, real min_r2, real fixed_r2)
+inline void fold_sphere_j(vec3* z, vec3* ja, vec3* jb, vec3* jc, real min_r2, real fixed_r2)
 {
     vec3 w = *z;
     real r2 = v3_dot(w, w);
@@ -32,12 +32,12 @@ inline void formula_sphere_fold_j(vec3* z, vec3* ja, vec3* jb, vec3* jc, real mi
     *z = v3_scale(w, f);
 }
 
-//! fn formula_reflect_j
+//! fn fold_reflect_j
 //! deps: vec3_ops
 //! class: helper
 // Where m holds, reflects z and the Jacobian's columns in the plane through
 // the origin with unit normal n.
-inline void formula_reflect_j(vec3* z, vec3* ja, vec3* jb, vec3* jc, vec3 n, mask m)
+inline void fold_reflect_j(vec3* z, vec3* ja, vec3* jb, vec3* jc, vec3 n, mask m)
 {
     *z = v3_select(*z, v3_mad(*z, n, -2.0f * v3_dot(*z, n)), m);
     *ja = v3_select(*ja, v3_mad(*ja, n, -2.0f * v3_dot(*ja, n)), m);
@@ -45,40 +45,40 @@ inline void formula_reflect_j(vec3* z, vec3* ja, vec3* jb, vec3* jc, vec3 n, mas
     *jc = v3_select(*jc, v3_mad(*jc, n, -2.0f * v3_dot(*jc, n)), m);
 }
 
-//! fn formula_octa_fold_j
-//! deps: vec3_ops, formula_reflect_j
+//! fn fold_octa_j
+//! deps: vec3_ops, fold_reflect_j
 //! class: helper
-// cube_fold (abs, then sort x >= y >= z) on z and the Jacobian: each
+// fold_cube (abs, then sort x >= y >= z) on z and the Jacobian: each
 // absolute value and swap is a reflection, so the columns take the same.
-inline void formula_octa_fold_j(vec3* z, vec3* ja, vec3* jb, vec3* jc)
+inline void fold_octa_j(vec3* z, vec3* ja, vec3* jb, vec3* jc)
 {
-    formula_reflect_j(z, ja, jb, jc, v3(1.0f, 0.0f, 0.0f), (*z).x < 0.0f);
-    formula_reflect_j(z, ja, jb, jc, v3(0.0f, 1.0f, 0.0f), (*z).y < 0.0f);
-    formula_reflect_j(z, ja, jb, jc, v3(0.0f, 0.0f, 1.0f), (*z).z < 0.0f);
+    fold_reflect_j(z, ja, jb, jc, v3(1.0f, 0.0f, 0.0f), (*z).x < 0.0f);
+    fold_reflect_j(z, ja, jb, jc, v3(0.0f, 1.0f, 0.0f), (*z).y < 0.0f);
+    fold_reflect_j(z, ja, jb, jc, v3(0.0f, 0.0f, 1.0f), (*z).z < 0.0f);
     const real h = K(0.70710678118654752f);
-    formula_reflect_j(z, ja, jb, jc, v3(-h, h, 0.0f), (*z).y > (*z).x);
-    formula_reflect_j(z, ja, jb, jc, v3(-h, 0.0f, h), (*z).z > (*z).x);
-    formula_reflect_j(z, ja, jb, jc, v3(0.0f, -h, h), (*z).z > (*z).y);
+    fold_reflect_j(z, ja, jb, jc, v3(-h, h, 0.0f), (*z).y > (*z).x);
+    fold_reflect_j(z, ja, jb, jc, v3(-h, 0.0f, h), (*z).z > (*z).x);
+    fold_reflect_j(z, ja, jb, jc, v3(0.0f, -h, h), (*z).z > (*z).y);
 }
 
-//! fn formula_tetra_fold_j
-//! deps: vec3_ops, formula_reflect_j
+//! fn fold_tetra_j
+//! deps: vec3_ops, fold_reflect_j
 //! class: helper
-// tetra_fold on z and the Jacobian: reflections in x+y=0, x+z=0, y+z=0.
-inline void formula_tetra_fold_j(vec3* z, vec3* ja, vec3* jb, vec3* jc)
+// fold_tetra on z and the Jacobian: reflections in x+y=0, x+z=0, y+z=0.
+inline void fold_tetra_j(vec3* z, vec3* ja, vec3* jb, vec3* jc)
 {
     const real h = K(0.70710678118654752f);
-    formula_reflect_j(z, ja, jb, jc, v3(h, h, 0.0f), (*z).x + (*z).y < 0.0f);
-    formula_reflect_j(z, ja, jb, jc, v3(h, 0.0f, h), (*z).x + (*z).z < 0.0f);
-    formula_reflect_j(z, ja, jb, jc, v3(0.0f, h, h), (*z).y + (*z).z < 0.0f);
+    fold_reflect_j(z, ja, jb, jc, v3(h, h, 0.0f), (*z).x + (*z).y < 0.0f);
+    fold_reflect_j(z, ja, jb, jc, v3(h, 0.0f, h), (*z).x + (*z).z < 0.0f);
+    fold_reflect_j(z, ja, jb, jc, v3(0.0f, h, h), (*z).y + (*z).z < 0.0f);
 }
 
-//! fn formula_bulb
+//! fn fold_bulb
 //! deps: vec3_ops
 //! class: helper
 // The White-Nylander power z -> r^n (sin ntheta cos nphi, sin ntheta sin nphi, cos ntheta)
 // with the scalar derivative dr -> n r^(n-1) dr.
-inline vec3 formula_bulb(vec3 z, real power, real* dr)
+inline vec3 fold_bulb(vec3 z, real power, real* dr)
 {
     real r = fmax(v3_length(z), K(1e-20f));
     real theta = acos(clamp(z.z / r, K(-1.0f), K(1.0f))) * power;
@@ -89,13 +89,13 @@ inline vec3 formula_bulb(vec3 z, real power, real* dr)
     return v3(zr * st * cos(phi), zr * st * sin(phi), zr * cos(theta));
 }
 
-//! fn formula_bulb_j
+//! fn fold_bulb_j
 //! deps: vec3_ops
 //! class: helper
 // The power on z and the Jacobian's columns, by the chain rule through the
 // spherical coordinates: a column t moves r by z.t / r, theta by
 // (z_z (x t_x + y t_y) / rho - rho t_z) / r^2 and phi by (x t_y - y t_x) / rho^2.
-inline void formula_bulb_j(vec3* zp, vec3* ja, vec3* jb, vec3* jc, real power)
+inline void fold_bulb_j(vec3* zp, vec3* ja, vec3* jb, vec3* jc, real power)
 {
     vec3 z = *zp;
     real r = fmax(v3_length(z), K(1e-20f));
@@ -118,13 +118,13 @@ inline void formula_bulb_j(vec3* zp, vec3* ja, vec3* jb, vec3* jc, real power)
     *zp = v3(rn * st * cp, rn * st * sp, rn * ct);
 }
 
-//! fn formula_inversion_j
+//! fn fold_inversion_j
 //! deps: vec3_ops
 //! class: helper
 // An inversion's derivative on the Jacobian's columns: c -> f (c - k w (w.c)),
 // with w the point before it, f its factor and k = 2 / |w|^2 (0 where it
 // only scales).
-inline void formula_inversion_j(vec3 w, vec3* ja, vec3* jb, vec3* jc, real f, real k)
+inline void fold_inversion_j(vec3 w, vec3* ja, vec3* jb, vec3* jc, real f, real k)
 {
     *ja = v3_scale(v3_mad(*ja, w, -k * v3_dot(w, *ja)), f);
     *jb = v3_scale(v3_mad(*jb, w, -k * v3_dot(w, *jb)), f);

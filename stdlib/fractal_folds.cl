@@ -1,4 +1,4 @@
-//! fn mandelbox_fold
+//! fn fold_mandelbox
 //! deps: vec3_ops
 //! class: helper
 // Tglad's Mandelbox folds without the scale and offset: the box fold
@@ -6,7 +6,7 @@
 // sphere fold (scale by fixed_r2/min_r2 inside min_radius, invert in the
 // fixed sphere between the two radii). *factor gets the sphere fold's
 // scale factor per lane, 1 where it leaves the point alone.
-inline vec3 mandelbox_fold(vec3 z, real folding_limit, real min_r2, real fixed_r2, real* factor)
+inline vec3 fold_mandelbox(vec3 z, real folding_limit, real min_r2, real fixed_r2, real* factor)
 {
     real fl = folding_limit;
     z = v3(clamp(z.x, -fl, fl) * 2.0f - z.x, clamp(z.y, -fl, fl) * 2.0f - z.y, clamp(z.z, -fl, fl) * 2.0f - z.z);
@@ -18,7 +18,7 @@ inline vec3 mandelbox_fold(vec3 z, real folding_limit, real min_r2, real fixed_r
 }
 
 //! fn de_mandelbox
-//! deps: vec3_ops, mandelbox_fold
+//! deps: vec3_ops, fold_mandelbox
 //! class: estimate
 // Mandelbox z <- scale * axis_scale * fold(z) + c, with c = p (julia = 0) or
 // the constant c (julia = 1). Running scalar derivative
@@ -37,7 +37,7 @@ inline real de_mandelbox(vec3 p, real scale, real min_r2, real fixed_r2, real fo
     mask alive = v3_dot(z, z) < 1e4f;
     for (int i = 0; i < iterations && M_ANY(alive); ++i) {
         real f;
-        vec3 folded = mandelbox_fold(z, folding_limit, min_r2, fixed_r2, &f);
+        vec3 folded = fold_mandelbox(z, folding_limit, min_r2, fixed_r2, &f);
         vec3 z_next = v3_add(v3_scale(v3_mul(folded, axis_scale), scale), add);
         real dr_next = dr * fabs(scale) * f + dr_add;
         z = v3_select(z, z_next, alive);
@@ -47,12 +47,12 @@ inline real de_mandelbox(vec3 p, real scale, real min_r2, real fixed_r2, real fo
     return v3_length(z) / fabs(dr);
 }
 
-//! fn cube_fold
+//! fn fold_cube
 //! deps: vec3_ops
 //! class: helper
 // The symmetry folds of the cube: into the wedge x >= y >= z >= 0 (the
 // absolute value, then a sort of the coordinates).
-inline vec3 cube_fold(vec3 z)
+inline vec3 fold_cube(vec3 z)
 {
     z = v3_abs(z);
     real hi = fmax(z.x, z.y), lo = fmin(z.x, z.y);
@@ -64,22 +64,22 @@ inline vec3 cube_fold(vec3 z)
     return z;
 }
 
-//! fn menger_step
-//! deps: vec3_ops, cube_fold
+//! fn fold_menger
+//! deps: vec3_ops, fold_cube
 //! class: helper
 // One Menger iteration: fold into the wedge, scale about the corner
 // (1, 1, 1) (shift = scale - 1), fold the middle layer back. Shared by
 // de_menger and trap_menger.
-inline vec3 menger_step(vec3 z, real scale, real shift)
+inline vec3 fold_menger(vec3 z, real scale, real shift)
 {
-    z = cube_fold(z);
+    z = fold_cube(z);
     z = v3_sub(v3_scale(z, scale), v3_splat(shift));
     z.z = SEL(z.z, z.z + shift, z.z < -0.5f * shift);
     return z;
 }
 
 //! fn de_menger
-//! deps: vec3_ops, sd_box, menger_step
+//! deps: vec3_ops, sd_box, fold_menger
 //! class: estimate
 // Menger sponge by folding (seed 001 part IV): fold into the wedge
 // x >= y >= z >= 0, scale about the corner (1, 1, 1), fold the middle layer
@@ -91,19 +91,19 @@ inline real de_menger(vec3 p, int iterations, real scale)
     real s = 1.0f;
     real shift = scale - 1.0f;
     for (int i = 0; i < iterations; ++i) {
-        z = menger_step(z, scale, shift);
+        z = fold_menger(z, scale, shift);
         s = s * scale;
     }
     return sd_box(z, v3_splat(1.0f), K(0.0f)) / s;
 }
 
-//! fn tetra_fold
+//! fn fold_tetra
 //! deps: vec3_ops
 //! class: helper
 // The three symmetry folds of the regular tetrahedron with vertices
 // (1,1,1), (-1,-1,1), (1,-1,-1), (-1,1,-1): reflect in x+y=0, x+z=0, y+z=0
 // when the point is on the negative side.
-inline vec3 tetra_fold(vec3 z)
+inline vec3 fold_tetra(vec3 z)
 {
     mask m = (z.x + z.y) < 0.0f;
     real nx = SEL(z.x, -z.y, m), ny = SEL(z.y, -z.x, m);
@@ -120,7 +120,7 @@ inline vec3 tetra_fold(vec3 z)
 }
 
 //! fn de_sierpinski
-//! deps: vec3_ops, tetra_fold
+//! deps: vec3_ops, fold_tetra
 //! class: estimate
 // Sierpinski tetrahedron, folding form (seed 001 part III): fold, scale
 // about the vertex (1, 1, 1); the distance to the tetrahedron after the last
@@ -130,7 +130,7 @@ inline real de_sierpinski(vec3 p, int iterations, real scale)
     vec3 z = p;
     real s = 1.0f;
     for (int i = 0; i < iterations; ++i) {
-        z = tetra_fold(z);
+        z = fold_tetra(z);
         z = v3_sub(v3_scale(z, scale), v3_splat(scale - 1.0f));
         s = s * scale;
     }
@@ -138,12 +138,12 @@ inline real de_sierpinski(vec3 p, int iterations, real scale)
     return tetra / s;
 }
 
-//! fn plane_fold
+//! fn fold_plane
 //! deps: vec3_ops
 //! class: helper
 // Reflect z in the plane through the origin with unit normal n when it lies
 // on the positive side.
-inline vec3 plane_fold(vec3 z, vec3 n)
+inline vec3 fold_plane(vec3 z, vec3 n)
 {
     real t = fmax(v3_dot(z, n), K(0.0f));
     return v3_mad(z, n, -2.0f * t);
@@ -155,26 +155,26 @@ inline vec3 plane_fold(vec3 z, vec3 n)
 // The matrix with rows r0, r1, r2 applied to a.
 inline vec3 v3_rows(vec3 a, vec3 r0, vec3 r1, vec3 r2) { return v3(v3_dot(r0, a), v3_dot(r1, a), v3_dot(r2, a)); }
 
-//! fn kifs_step
-//! deps: vec3_ops, tetra_fold, plane_fold, cube_fold, v3_rows
+//! fn fold_kifs
+//! deps: vec3_ops, fold_tetra, fold_plane, fold_cube, v3_rows
 //! class: helper
 // One step of the kaleidoscopic IFS: rotate (rows b0..b2), fold by the
 // symmetry group (n1, n2: the icosahedral mirror normals), scale about
 // `offset`, rotate (rows a0..a2). Shared by de_kifs and trap_kifs.
-inline vec3 kifs_step(vec3 z, int symmetry, real scale, vec3 offset, vec3 n1, vec3 n2,
+inline vec3 fold_kifs(vec3 z, int symmetry, real scale, vec3 offset, vec3 n1, vec3 n2,
                       vec3 b0, vec3 b1, vec3 b2, vec3 a0, vec3 a1, vec3 a2)
 {
     z = v3_rows(z, b0, b1, b2);
     if (symmetry == 0) {
-        z = tetra_fold(z);
+        z = fold_tetra(z);
     } else if (symmetry == 2) {
         for (int k = 0; k < 3; ++k) {
             z = v3_abs(z);
-            z = plane_fold(z, n1);
-            z = plane_fold(z, n2);
+            z = fold_plane(z, n1);
+            z = fold_plane(z, n2);
         }
     } else {
-        z = cube_fold(z);
+        z = fold_cube(z);
     }
     z = v3_sub(v3_scale(z, scale), v3_scale(offset, scale - 1.0f));
     if (symmetry == 3) {
@@ -186,7 +186,7 @@ inline vec3 kifs_step(vec3 z, int symmetry, real scale, vec3 offset, vec3 n1, ve
 }
 
 //! fn de_kifs
-//! deps: vec3_ops, kifs_step
+//! deps: vec3_ops, fold_kifs
 //! class: estimate
 // Knighty's kaleidoscopic IFS (seed 001 part IV): per iteration rotate
 // (rows b0..b2), fold into the fundamental domain of the symmetry group
@@ -206,18 +206,18 @@ inline real de_kifs(vec3 p, int symmetry, real scale, vec3 offset, int iteration
     vec3 z = p;
     real s = 1.0f;
     for (int i = 0; i < iterations; ++i) {
-        z = kifs_step(z, symmetry, scale, offset, n1, n2, b0, b1, b2, a0, a1, a2);
+        z = fold_kifs(z, symmetry, scale, offset, n1, n2, b0, b1, b2, a0, a1, a2);
         s = s * scale;
     }
     return (v3_length(z) - v3_length(offset)) / s;
 }
 
-//! fn hybrid_bulb_step
+//! fn fold_hybrid_bulb
 //! deps: vec3_ops
 //! class: helper
 // One Mandelbulb step of a hybrid orbit: z <- z^power + c (trig form),
 // dr <- power r^(power-1) dr + 1.
-inline vec3 hybrid_bulb_step(vec3 z, real power, vec3 c, real* dr)
+inline vec3 fold_hybrid_bulb(vec3 z, real power, vec3 c, real* dr)
 {
     real r = fmax(v3_length(z), K(1e-20f));
     real theta = acos(clamp(z.z / r, K(-1.0f), K(1.0f))) * power;
@@ -229,15 +229,15 @@ inline vec3 hybrid_bulb_step(vec3 z, real power, vec3 c, real* dr)
     return v3(zr * st * cos(phi) + c.x, zr * st * sin(phi) + c.y, zr * cos(theta) + c.z);
 }
 
-//! fn hybrid_box_step
-//! deps: vec3_ops, mandelbox_fold
+//! fn fold_hybrid_box
+//! deps: vec3_ops, fold_mandelbox
 //! class: helper
 // One Mandelbox step of a hybrid orbit: z <- scale fold(z) + c,
 // dr <- dr |scale| f + 1.
-inline vec3 hybrid_box_step(vec3 z, real scale, real min_r2, real fixed_r2, real folding_limit, vec3 c, real* dr)
+inline vec3 fold_hybrid_box(vec3 z, real scale, real min_r2, real fixed_r2, real folding_limit, vec3 c, real* dr)
 {
     real f;
-    vec3 folded = mandelbox_fold(z, folding_limit, min_r2, fixed_r2, &f);
+    vec3 folded = fold_mandelbox(z, folding_limit, min_r2, fixed_r2, &f);
     *dr = *dr * fabs(scale) * f + 1.0f;
     return v3_add(v3_scale(folded, scale), c);
 }

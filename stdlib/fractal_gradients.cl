@@ -1,10 +1,10 @@
-//! fn log_estimator_gradient
+//! fn deg_log_estimator
 //! deps: vec3_ops
 //! class: helper
 // grad of d = 0.5 log r r / dr from the orbit's end: z, its Jacobian
 // columns jx, jy, jz (grad r = J^T z / r) and the running derivative with
 // its gradient.
-inline vec3 log_estimator_gradient(vec3 z, vec3 jx, vec3 jy, vec3 jz, real dr, vec3 gdr)
+inline vec3 deg_log_estimator(vec3 z, vec3 jx, vec3 jy, vec3 jz, real dr, vec3 gdr)
 {
     real r = fmax(v3_length(z), K(1e-20f));
     vec3 gr = v3_scale(v3(v3_dot(z, jx), v3_dot(z, jy), v3_dot(z, jz)), 1.0f / r);
@@ -12,8 +12,8 @@ inline vec3 log_estimator_gradient(vec3 z, vec3 jx, vec3 jy, vec3 jz, real dr, v
     return v3_scale(v3_sub(v3_scale(gr, (lr + 1.0f) / dr), v3_scale(gdr, lr * r / (dr * dr))), 0.5f);
 }
 
-//! fn gn_mandelbulb
-//! deps: vec3_ops, log_estimator_gradient
+//! fn deg_mandelbulb
+//! deps: vec3_ops, deg_log_estimator
 //! class: helper
 // The gradient of the Mandelbulb's (julia = 0: z <- z^power + p) or
 // Juliabulb's (julia = 1: + c) analytic estimator d = 0.5 log r r / dr for
@@ -27,7 +27,7 @@ inline vec3 log_estimator_gradient(vec3 z, vec3 jx, vec3 jy, vec3 jz, real dr, v
 //   dR (sT cF, sT sF, cT) + R dT (cT cF, cT sF, -sT) + R dF (-sT sF, sT cF, 0)
 // with dR = n r^(n-1) (z.dz)/r, dT = -n (dz_z r - z_z dr) / (r rho),
 // dF = n (x dy - y dx) / rho^2, rho = |(x, y)|.
-inline vec3 gn_bulb_tangent(vec3 z, vec3 dz, real r, real rho, real power, real rn, real st, real ct, real sf, real cf)
+inline vec3 deg_bulb_tangent(vec3 z, vec3 dz, real r, real rho, real power, real rn, real st, real ct, real sf, real cf)
 {
     real dr = v3_dot(z, dz) / r;
     real dR = power * rn / r * dr;
@@ -39,7 +39,7 @@ inline vec3 gn_bulb_tangent(vec3 z, vec3 dz, real r, real rho, real power, real 
     return v3_add(a, v3_add(b, c));
 }
 
-inline vec3 gn_mandelbulb(vec3 p, real power, int iterations, real bailout, int julia, vec3 c)
+inline vec3 deg_mandelbulb(vec3 p, real power, int iterations, real bailout, int julia, vec3 c)
 {
     vec3 add = julia ? c : p;
     real id = julia ? 0.0f : 1.0f;
@@ -59,9 +59,9 @@ inline vec3 gn_mandelbulb(vec3 p, real power, int iterations, real bailout, int 
         real phi = atan2(z.y, z.x) * power;
         real rn = pow(r, power);
         real st = sin(theta), ct = cos(theta), sf = sin(phi), cf = cos(phi);
-        vec3 ax = v3_add(gn_bulb_tangent(z, jx, r, rho, power, rn, st, ct, sf, cf), v3(id, 0.0f, 0.0f));
-        vec3 ay = v3_add(gn_bulb_tangent(z, jy, r, rho, power, rn, st, ct, sf, cf), v3(0.0f, id, 0.0f));
-        vec3 az = v3_add(gn_bulb_tangent(z, jz, r, rho, power, rn, st, ct, sf, cf), v3(0.0f, 0.0f, id));
+        vec3 ax = v3_add(deg_bulb_tangent(z, jx, r, rho, power, rn, st, ct, sf, cf), v3(id, 0.0f, 0.0f));
+        vec3 ay = v3_add(deg_bulb_tangent(z, jy, r, rho, power, rn, st, ct, sf, cf), v3(0.0f, id, 0.0f));
+        vec3 az = v3_add(deg_bulb_tangent(z, jz, r, rho, power, rn, st, ct, sf, cf), v3(0.0f, 0.0f, id));
         vec3 z_next = v3_add(v3_scale(v3(st * cf, st * sf, ct), rn), add);
         z = v3_select(z, z_next, alive);
         jx = v3_select(jx, ax, alive);
@@ -71,10 +71,10 @@ inline vec3 gn_mandelbulb(vec3 p, real power, int iterations, real bailout, int 
         gdr = v3_select(gdr, gdr_next, alive);
         alive = alive & (v3_length(z) < bailout);
     }
-    return log_estimator_gradient(z, jx, jy, jz, dr, gdr);
+    return deg_log_estimator(z, jx, jy, jz, dr, gdr);
 }
 
-//! fn gn_quaternion_julia
+//! fn deg_quaternion_julia
 //! deps: vec3_ops
 //! class: helper
 // The gradient of the quaternion Julia estimator d = 0.5 log r r / md for
@@ -84,7 +84,7 @@ inline vec3 gn_mandelbulb(vec3 p, real power, int iterations, real bailout, int 
 // degree 3: d(q^3) = ((3a^2 - 3 v.v) da - 6a v.dv, (6a da - 2 v.dv) v + (3a^2 - v.v) dv).
 // The point (x, y, z) is x + y i + z j + slice k, so the three tangents
 // start as (1, 0), (0, i), (0, j).
-inline void gn_quat_tangent(real a, vec3 v, int degree, real* da, vec3* dv)
+inline void deg_quat_tangent(real a, vec3 v, int degree, real* da, vec3* dv)
 {
     real vdv = v3_dot(v, *dv);
     real na, nb;
@@ -102,7 +102,7 @@ inline void gn_quat_tangent(real a, vec3 v, int degree, real* da, vec3* dv)
     *dv = ndv;
 }
 
-inline vec3 gn_quaternion_julia(vec3 p, real slice, real ca, vec3 cv, int degree, int iterations, real bailout)
+inline vec3 deg_quaternion_julia(vec3 p, real slice, real ca, vec3 cv, int degree, int iterations, real bailout)
 {
     real a = p.x;
     vec3 v = v3(p.y, p.z, slice);
@@ -120,9 +120,9 @@ inline vec3 gn_quaternion_julia(vec3 p, real slice, real ca, vec3 cv, int degree
         vec3 gmd_next = v3_scale(v3_add(v3_scale(grd1, md), v3_scale(gmd, rd1)), (real)(degree));
         real ax = dax, ay = day, az = daz;
         vec3 bx = dvx, by = dvy, bz = dvz;
-        gn_quat_tangent(a, v, degree, &ax, &bx);
-        gn_quat_tangent(a, v, degree, &ay, &by);
-        gn_quat_tangent(a, v, degree, &az, &bz);
+        deg_quat_tangent(a, v, degree, &ax, &bx);
+        deg_quat_tangent(a, v, degree, &ay, &by);
+        deg_quat_tangent(a, v, degree, &az, &bz);
         real vv = v3_dot(v, v);
         real a_next = (degree == 3 ? a * (a * a - 3.0f * vv) : a * a - vv) + ca;
         vec3 v_next = v3_add(v3_scale(v, degree == 3 ? 3.0f * a * a - vv : 2.0f * a), cv);
@@ -140,7 +140,7 @@ inline vec3 gn_quaternion_julia(vec3 p, real slice, real ca, vec3 cv, int degree
     return v3_scale(v3_sub(v3_scale(gr, (lr + 1.0f) / md), v3_scale(gmd, lr * r / (md * md))), 0.5f);
 }
 
-//! fn gn_mandelbox
+//! fn deg_mandelbox
 //! deps: vec3_ops
 //! class: helper
 // The gradient of the Mandelbox's estimator d = |z| / |dr| for
@@ -150,7 +150,7 @@ inline vec3 gn_quaternion_julia(vec3 p, real slice, real ca, vec3 cv, int degree
 // (f = fixed_r2 / |w|^2, w the box-folded point): grad f = -2 f J_w^T w / |w|^2.
 // grad d = grad |z| / |dr| - |z| sign(dr) grad dr / dr^2. With de: jacobian
 // the same gradient serves: both estimate the same surface.
-inline vec3 gn_mandelbox(vec3 p, real scale, real min_r2, real fixed_r2, real folding_limit, int iterations,
+inline vec3 deg_mandelbox(vec3 p, real scale, real min_r2, real fixed_r2, real folding_limit, int iterations,
                          int julia, vec3 c, vec3 axis_scale)
 {
     vec3 add = julia ? c : p;

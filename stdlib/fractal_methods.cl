@@ -1,11 +1,11 @@
-//! fn bulb_escape_length
-//! deps: vec3_ops, bulb_power_int, hybrid_bulb_step
+//! fn orbit_bulb_length
+//! deps: vec3_ops, fold_bulb_int, fold_hybrid_bulb
 //! class: helper
 // The Mandelbulb orbit of p: |z| after it passes the bailout (pin < 0), or
 // after exactly `pin` steps per lane (pin >= 0: the Makin/Buddhi gradient
 // needs all four taps at the same iteration count, seed 001 part V).
 // ipower > 0 selects the trig-free integer power. *steps gets the count.
-inline real bulb_escape_length(vec3 p, real power, int ipower, int iterations, real bailout, real pin, real* steps)
+inline real orbit_bulb_length(vec3 p, real power, int ipower, int iterations, real bailout, real pin, real* steps)
 {
     vec3 z = p;
     real r = v3_length(z);
@@ -16,10 +16,10 @@ inline real bulb_escape_length(vec3 p, real power, int ipower, int iterations, r
         vec3 z_next;
         if (ipower > 0) {
             real rn1;
-            z_next = v3_add(bulb_power_int(z, ipower, &rn1), p);
+            z_next = v3_add(fold_bulb_int(z, ipower, &rn1), p);
         } else {
             real unused = 1.0f;
-            z_next = hybrid_bulb_step(z, power, p, &unused);
+            z_next = fold_hybrid_bulb(z, power, p, &unused);
         }
         z = v3_select(z, z_next, alive);
         n = SEL(n, n + 1.0f, alive);
@@ -31,7 +31,7 @@ inline real bulb_escape_length(vec3 p, real power, int ipower, int iterations, r
 }
 
 //! fn de_mandelbulb_numeric
-//! deps: vec3_ops, bulb_escape_length
+//! deps: vec3_ops, orbit_bulb_length
 //! class: estimate
 // Mandelbulb estimators from a 4-point forward-difference gradient (seed
 // 001 part V), eps = 1e-4:
@@ -46,12 +46,12 @@ inline real de_mandelbulb_numeric(vec3 p, real power, int ipower, int iterations
 {
     const scalar eps = K(1e-4f);
     real n;
-    real r = bulb_escape_length(p, power, ipower, iterations, bailout, (real)(-1.0f), &n);
+    real r = orbit_bulb_length(p, power, ipower, iterations, bailout, (real)(-1.0f), &n);
     real pin = method == 2 ? n : (real)(-1.0f);
     real nx, ny, nz;
-    real rx = bulb_escape_length(v3(p.x + eps, p.y, p.z), power, ipower, iterations, bailout, pin, &nx);
-    real ry = bulb_escape_length(v3(p.x, p.y + eps, p.z), power, ipower, iterations, bailout, pin, &ny);
-    real rz = bulb_escape_length(v3(p.x, p.y, p.z + eps), power, ipower, iterations, bailout, pin, &nz);
+    real rx = orbit_bulb_length(v3(p.x + eps, p.y, p.z), power, ipower, iterations, bailout, pin, &nx);
+    real ry = orbit_bulb_length(v3(p.x, p.y + eps, p.z), power, ipower, iterations, bailout, pin, &ny);
+    real rz = orbit_bulb_length(v3(p.x, p.y, p.z + eps), power, ipower, iterations, bailout, pin, &nz);
     real de;
     if (method == 2) {
         real g = v3_length(v3(rx - r, ry - r, rz - r)) / eps;
@@ -69,7 +69,7 @@ inline real de_mandelbulb_numeric(vec3 p, real power, int ipower, int iterations
     return SEL(de, r0 - set_radius, r0 > 1.5f * set_radius);
 }
 
-//! fn mandelbox_jacobian_orbit
+//! fn orbit_mandelbox_jacobian
 //! deps: vec3_ops
 //! class: helper
 // Mandelbox with a running 3x3 Jacobian by forward-mode dual numbers (seed
@@ -79,7 +79,7 @@ inline real de_mandelbulb_numeric(vec3 p, real power, int ipower, int iterations
 // per-axis scale multiplies rows, and + p adds the identity. Then
 // grad |z| = J^T z / |z|. Returns z_n; *jf2 gets the squared Frobenius
 // norm of J.
-inline vec3 mandelbox_jacobian_orbit(vec3 p, real scale, real min_r2, real fixed_r2, real folding_limit, int iterations,
+inline vec3 orbit_mandelbox_jacobian(vec3 p, real scale, real min_r2, real fixed_r2, real folding_limit, int iterations,
                                      int julia, vec3 c, vec3 axis_scale, real* jf2)
 {
     vec3 add = julia ? c : p;
@@ -123,7 +123,7 @@ inline vec3 mandelbox_jacobian_orbit(vec3 p, real scale, real min_r2, real fixed
 }
 
 //! fn de_mandelbox_jacobian
-//! deps: vec3_ops, mandelbox_jacobian_orbit
+//! deps: vec3_ops, orbit_mandelbox_jacobian
 //! class: estimate
 // The Mandelbox estimate from the running Jacobian (seed 001 part VII):
 // d = |z| / ||J||, the linear estimate with the matrix norm, which bounds
@@ -138,6 +138,6 @@ inline real de_mandelbox_jacobian(vec3 p, real scale, real min_r2, real fixed_r2
                                   int julia, vec3 c, vec3 axis_scale)
 {
     real jf2;
-    vec3 z = mandelbox_jacobian_orbit(p, scale, min_r2, fixed_r2, folding_limit, iterations, julia, c, axis_scale, &jf2);
+    vec3 z = orbit_mandelbox_jacobian(p, scale, min_r2, fixed_r2, folding_limit, iterations, julia, c, axis_scale, &jf2);
     return v3_length(z) / fmax(sqrt(jf2), K(1e-30f));
 }

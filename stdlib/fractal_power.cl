@@ -72,7 +72,7 @@ inline __attribute__((always_inline)) void cpow_int_rho(real a, real rho2, int n
     *out_b = ab;
 }
 
-//! fn bulb_power_int
+//! fn fold_bulb_int
 //! deps: vec3_ops, cpow_int, ipow_real
 //! class: helper
 // White-Nylander z^n for an integer n with no trig, given r = |z|: with
@@ -111,13 +111,13 @@ inline __attribute__((always_inline)) vec3 bulb_power_int_r(vec3 z, real r, int 
 }
 
 // The same when r is not at hand.
-inline vec3 bulb_power_int(vec3 z, int n, real* r_pow_n_minus_1)
+inline vec3 fold_bulb_int(vec3 z, int n, real* r_pow_n_minus_1)
 {
     return bulb_power_int_r(z, v3_length(z), n, r_pow_n_minus_1);
 }
 
 //! fn de_mandelbulb_int
-//! deps: vec3_ops, bulb_power_int
+//! deps: vec3_ops, fold_bulb_int
 //! class: estimate
 // The Mandelbulb (julia = 0: z <- z^n + p) or Juliabulb (julia = 1:
 // z <- z^n + c) for an integer power known at build time: the analytic
@@ -146,7 +146,7 @@ inline __attribute__((always_inline)) real de_mandelbulb_int(vec3 p, int power, 
     return SEL(de, r0 - set_radius, r0 > 1.5f * set_radius);
 }
 
-//! fn bulb_de_trig
+//! fn de_bulb_trig
 //! deps: vec3_ops
 //! class: estimate
 // The White-Nylander orbit z <- z^n + c for any real power, with the trig
@@ -155,7 +155,7 @@ inline __attribute__((always_inline)) real de_mandelbulb_int(vec3 p, int power, 
 // Juliabulb a constant c (dr_add = 0). Lanes leave the loop as they pass the
 // bailout. Beyond 1.5x the radius that holds the set the potential estimate
 // overshoots, so the distance to that ball (a true lower bound) is returned.
-inline real bulb_de_trig(vec3 p, vec3 c, real dr_add, real power, int iterations, real bailout, real set_radius)
+inline real de_bulb_trig(vec3 p, vec3 c, real dr_add, real power, int iterations, real bailout, real set_radius)
 {
     vec3 z = p;
     real dr = 1.0f;
@@ -181,12 +181,12 @@ inline real bulb_de_trig(vec3 p, vec3 c, real dr_add, real power, int iterations
 }
 
 //! fn de_juliabulb
-//! deps: bulb_de_trig
+//! deps: de_bulb_trig
 //! class: estimate
 // The Juliabulb for any real power: z <- z^n + c (c constant, so no + 1 in dr).
 inline real de_juliabulb(vec3 p, real power, int iterations, real bailout, real set_radius, vec3 c)
 {
-    return bulb_de_trig(p, c, 0.0f, power, iterations, bailout, set_radius);
+    return de_bulb_trig(p, c, 0.0f, power, iterations, bailout, set_radius);
 }
 
 //! fn de_quaternion_julia

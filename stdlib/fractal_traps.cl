@@ -18,7 +18,7 @@ inline real orbit_iteration(real n, real r, real R, real g, int power_law, int i
 }
 
 //! fn trap_mandelbulb
-//! deps: vec3_ops, hybrid_bulb_step, orbit_iteration
+//! deps: vec3_ops, fold_hybrid_bulb, orbit_iteration
 //! class: helper
 // Orbit trap of the Mandelbulb (julia = 0) or Juliabulb (julia = 1): the
 // smallest distance of the orbit to the origin and the x, y, z coordinate
@@ -37,7 +37,7 @@ inline real trap_mandelbulb(vec3 p, real power, int iterations, real bailout, in
     mask alive = r < bailout;
     for (int i = 0; i < iterations && M_ANY(alive); ++i) {
         real unused = 1.0f;
-        vec3 z_next = hybrid_bulb_step(z, power, add, &unused);
+        vec3 z_next = fold_hybrid_bulb(z, power, add, &unused);
         z = v3_select(z, z_next, alive);
         n = SEL(n, n + 1.0f, alive);
         r = v3_length(z);
@@ -50,7 +50,7 @@ inline real trap_mandelbulb(vec3 p, real power, int iterations, real bailout, in
 }
 
 //! fn trap_mandelbulb_int
-//! deps: vec3_ops, bulb_power_int, orbit_iteration
+//! deps: vec3_ops, fold_bulb_int, orbit_iteration
 //! class: helper
 // trap_mandelbulb for an integer power known at build time: the same orbit
 // by the trig-free power (de Moivre), so the trap costs about one distance
@@ -78,7 +78,7 @@ inline __attribute__((always_inline)) real trap_mandelbulb_int(vec3 p, int power
 }
 
 //! fn trap_mandelbox
-//! deps: vec3_ops, mandelbox_fold, orbit_iteration
+//! deps: vec3_ops, fold_mandelbox, orbit_iteration
 //! class: helper
 // Orbit trap of the Mandelbox: the smallest |coordinate| along the orbit;
 // *iter the smooth iteration count (linear growth by |scale|, escape at
@@ -92,7 +92,7 @@ inline real trap_mandelbox(vec3 p, real scale, real min_r2, real fixed_r2, real 
     mask alive = v3_dot(z, z) < 1e4f;
     for (int i = 0; i < iterations && M_ANY(alive); ++i) {
         real f;
-        vec3 folded = mandelbox_fold(z, folding_limit, min_r2, fixed_r2, &f);
+        vec3 folded = fold_mandelbox(z, folding_limit, min_r2, fixed_r2, &f);
         z = v3_select(z, v3_add(v3_scale(v3_mul(folded, axis_scale), scale), add), alive);
         n = SEL(n, n + 1.0f, alive);
         trap = SEL(trap, fmin(trap, fmin(fabs(z.x), fmin(fabs(z.y), fabs(z.z)))), alive);
@@ -137,7 +137,7 @@ inline real trap_quaternion_julia(vec3 p, real slice, real ca, vec3 cv, int degr
 }
 
 //! fn trap_menger
-//! deps: vec3_ops, menger_step
+//! deps: vec3_ops, fold_menger
 //! class: helper
 // Orbit trap of the Menger sponge: the smallest |coordinate| of the folded,
 // scaled point over the iterations (the same steps as de_menger). A fold
@@ -148,7 +148,7 @@ inline real trap_menger(vec3 p, int iterations, real scale, real* iter)
     real trap = 1e10f;
     real shift = scale - 1.0f;
     for (int i = 0; i < iterations; ++i) {
-        z = menger_step(z, scale, shift);
+        z = fold_menger(z, scale, shift);
         trap = fmin(trap, fmin(fabs(z.x), fmin(fabs(z.y), fabs(z.z))));
     }
     *iter = (real)(1.0f);
@@ -156,7 +156,7 @@ inline real trap_menger(vec3 p, int iterations, real scale, real* iter)
 }
 
 //! fn trap_sierpinski
-//! deps: vec3_ops, tetra_fold
+//! deps: vec3_ops, fold_tetra
 //! class: helper
 // Orbit trap of the Sierpinski tetrahedron (the steps of de_sierpinski);
 // *iter is 1 (no escape).
@@ -165,7 +165,7 @@ inline real trap_sierpinski(vec3 p, int iterations, real scale, real* iter)
     vec3 z = p;
     real trap = 1e10f;
     for (int i = 0; i < iterations; ++i) {
-        z = tetra_fold(z);
+        z = fold_tetra(z);
         z = v3_sub(v3_scale(z, scale), v3_splat(scale - 1.0f));
         trap = fmin(trap, fmin(fabs(z.x), fmin(fabs(z.y), fabs(z.z))));
     }
@@ -174,7 +174,7 @@ inline real trap_sierpinski(vec3 p, int iterations, real scale, real* iter)
 }
 
 //! fn trap_kifs
-//! deps: vec3_ops, kifs_step
+//! deps: vec3_ops, fold_kifs
 //! class: helper
 // Orbit trap of the kaleidoscopic IFS (the steps of de_kifs); *iter is 1
 // (no escape).
@@ -187,7 +187,7 @@ inline real trap_kifs(vec3 p, int symmetry, real scale, vec3 offset, int iterati
     vec3 z = p;
     real trap = 1e10f;
     for (int i = 0; i < iterations; ++i) {
-        z = kifs_step(z, symmetry, scale, offset, n1, n2, b0, b1, b2, a0, a1, a2);
+        z = fold_kifs(z, symmetry, scale, offset, n1, n2, b0, b1, b2, a0, a1, a2);
         trap = fmin(trap, fmin(fabs(z.x), fmin(fabs(z.y), fabs(z.z))));
     }
     *iter = (real)(1.0f);

@@ -1,5 +1,5 @@
 //! fn de_mandelbulb
-//! deps: bulb_de_trig
+//! deps: de_bulb_trig
 //! class: estimate
 // White-Nylander Mandelbulb for any real power, analytic running-derivative
 // estimator d = 0.5 log(r) r / dr (seed 000, 001 part V): the orbit
@@ -7,5 +7,5 @@
 // de_mandelbulb_int instead.
 inline real de_mandelbulb(vec3 p, real power, int iterations, real bailout, real set_radius)
 {
-    return bulb_de_trig(p, p, 1.0f, power, iterations, bailout, set_radius);
+    return de_bulb_trig(p, p, 1.0f, power, iterations, bailout, set_radius);
 }

@@ -41,7 +41,7 @@ inline mat_record mat_mix(mat_record a, mat_record b, real w)
 
 //! fn op_weight_polynomial
 //! class: helper
-// The share of b in op_smooth_union(a, b, k): the derivative of the blend
+// The share of b in op_blend_polynomial(a, b, k): the derivative of the blend
 // with respect to b, so the two shares sum to 1 and weight each child as
 // much as it shapes the surface; 1/2 where a = b, 0 once b >= a + k.
 inline real op_weight_polynomial(real a, real b, real k)

@@ -1,5 +1,5 @@
 //! fn os_item
-//! deps: vec3_ops, sd_sphere, sd_box, op_smooth_union
+//! deps: vec3_ops, sd_sphere, sd_box, op_blend_polynomial
 //! class: bound
 // One item of an object set (see the compiler's ir/object_set.hpp for the
 // layout): a sphere or box record, or several smooth-united in order, the
@@ -15,7 +15,7 @@ inline real os_item(vec3 p, __global const float* item, __global const float* pr
     __global const float* r = prims + 8 * (int)item[0];
     const int count = (int)item[1];
     real d = os_prim(p, r);
-    for (int k = 1; k < count; ++k) d = op_smooth_union(d, os_prim(p, r + 8 * k), (real)item[2]);
+    for (int k = 1; k < count; ++k) d = op_blend_polynomial(d, os_prim(p, r + 8 * k), (real)item[2]);
     return d;
 }
 

@@ -19,7 +19,7 @@ TEST(Specialisation, OnlyReachedStdlibFunctions) {
   std::string k = kernel_of("scene: {sphere: {radius: 1.25}}\n");
   EXPECT_TRUE(has(k, "inline real sd_sphere("));
   for (const char* absent : {"sd_torus", "sd_box", "sd_capsule", "sd_cylinder", "sd_plane", "de_mandelbulb",
-                             "op_smooth_union", "normal_central"})
+                             "op_blend_polynomial", "normal_central"})
     EXPECT_FALSE(has(k, absent)) << absent;
   std::string t = kernel_of("scene: {torus: {major_radius: 1, minor_radius: 0.2}}\n");
   EXPECT_TRUE(has(t, "inline real sd_torus("));
@@ -27,10 +27,11 @@ TEST(Specialisation, OnlyReachedStdlibFunctions) {
 }
 
 TEST(Specialisation, DependenciesComeAlong) {
-  std::string k = kernel_of("scene: {smooth_difference: {radius: 0.2, children: [{sphere: {radius: 1}}, {box: {}}]}}\n");
-  EXPECT_TRUE(has(k, "inline real op_smooth_difference("));
-  EXPECT_TRUE(has(k, "inline real op_smooth_intersection("));  // smooth_difference calls it
-  EXPECT_LT(k.find("op_smooth_intersection("), k.find("op_smooth_difference("));
+  std::string k = kernel_of("scene: {triangle: {a: [0, 0, 0], b: [1, 0, 0], c: [0, 1, 0]}}\n");
+  EXPECT_TRUE(has(k, "inline real sd_triangle("));
+  EXPECT_TRUE(has(k, "inline vec3 v3_cross("));  // sd_triangle calls it
+  EXPECT_LT(k.find("inline vec3 v3_cross("), k.find("inline real sd_triangle("));
+  EXPECT_FALSE(has(k, "inline real sd_quad("));  // a neighbour in its file, not reached
 }
 
 TEST(Specialisation, StaticValuesAreLiterals) {
@@ -101,7 +102,7 @@ TEST(Specialisation, IntegerMandelbulbPowerUsesNoTrig) {
   for (const char* scene : {"scene: {mandelbulb: {power: 8}}\n", "scene: {mandelbulb: {power: 5, julia: [0.3, 0, 0]}}\n"}) {
     std::string k = kernel_of(scene);
     EXPECT_TRUE(has(k, "de_mandelbulb_int(p")) << scene;
-    for (const char* fn : {"de_mandelbulb_int", "bulb_power_int", "cpow_int", "ipow_real"}) {
+    for (const char* fn : {"de_mandelbulb_int", "fold_bulb_int", "cpow_int", "ipow_real"}) {
       std::string body = function_text(k, fn);
       ASSERT_FALSE(body.empty()) << fn;
       for (const char* trig : {"acos(", "atan2(", "sin(", "cos(", "pow("}) EXPECT_FALSE(has(body, trig)) << fn << " " << trig;

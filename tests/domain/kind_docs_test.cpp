@@ -6,6 +6,7 @@
 
 #include <set>
 #include <string>
+#include <vector>
 
 #include "scene_text.hpp"
 #include "sdfc/ir/printer.hpp"
@@ -78,15 +79,22 @@ TEST(KindDocs, EveryDescribedKindIsDocumented) {
   }
 }
 
+// Primitives, fractals and the operations whose example writes them under
+// their own key with a map (twist, polar_repeat, smooth_union, ...).
 TEST(KindDocs, DocumentedDefaultsAreTheReadersDefaults) {
   int checked = 0;
-  for (const kinds::Description* d : kinds::all()) {
+  std::vector<const kinds::Description*> described = kinds::all();
+  for (const kinds::Description* d : kinds::operations())
+    if (!d->example.empty()) described.push_back(d);
+  for (const kinds::Description* d : described) {
     SourceValue node = load_yaml_text(std::string(d->example), "example.yaml");
     const SourceValue* body = node.find(d->yaml);
+    const bool operation = kinds::operation(d->kind) != nullptr;
+    if (operation && !body) continue;  // written under other keys (chamfer_union, ...)
     ASSERT_NE(body, nullptr) << d->yaml << ": the example does not hold its own key";
     if (!body->is_map()) continue;  // a list of children or a scalar: no named parameters
     for (const kinds::ParamDoc& p : d->docs) {
-      if (p.fallback.empty()) continue;
+      if (p.fallback.empty() || p.fallback[0] == '(') continue;  // required, or a default said in words
       std::string left_out = example_with(*d, p, ""), written = example_with(*d, p, p.fallback);
       SCOPED_TRACE(std::string(d->yaml) + "." + std::string(p.name) + ": " + left_out + " vs " + written);
       auto errors = test::errors_of("scene: " + written + "\n");

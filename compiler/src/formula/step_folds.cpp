@@ -54,11 +54,11 @@ void box_eval(const Step& st, RefState& s) {
 void sphere_emit(const Step& st, EmitState& s) {
   std::string m2 = s.lit.real(st.a[0] * st.a[0]), f2 = s.lit.real(st.a[1] * st.a[1]);
   if (s.jacobian) {
-    s.used.insert("formula_sphere_fold_j");
-    s.w.line(fmt::format("formula_sphere_fold_j({}, {}, {});", jac_args(), m2, f2));
+    s.used.insert("fold_sphere_j");
+    s.w.line(fmt::format("fold_sphere_j({}, {}, {});", jac_args(), m2, f2));
   } else {
-    s.used.insert("formula_sphere_fold");
-    s.w.line(fmt::format("z = formula_sphere_fold(z, {}, {}, &dr);", m2, f2));
+    s.used.insert("fold_sphere");
+    s.w.line(fmt::format("z = fold_sphere(z, {}, {}, &dr);", m2, f2));
   }
 }
 void sphere_eval(const Step& st, RefState& s) {
@@ -103,8 +103,8 @@ void plane_emit(const Step& st, EmitState& s) {
   V3 n = unit(st);
   std::string nv = s.lit.vec3(n), off = s.lit.real(st.a[3]);
   if (s.jacobian) {
-    s.used.insert("formula_reflect_j");
-    s.w.line(fmt::format("{{ mask side = v3_dot(z, {0}) > {1}; z = v3_mad(z, {0}, -{1}); formula_reflect_j({2}, {0}, side); "
+    s.used.insert("fold_reflect_j");
+    s.w.line(fmt::format("{{ mask side = v3_dot(z, {0}) > {1}; z = v3_mad(z, {0}, -{1}); fold_reflect_j({2}, {0}, side); "
                          "z = v3_mad(z, {0}, {1}); }}  // plane_fold",
                          nv, off, jac_args()));
   } else {
@@ -134,11 +134,11 @@ void symmetry_fold(EmitState& s, const std::string& jacobian_fn, const std::stri
   s.used.insert(s.jacobian ? jacobian_fn : fn);
   s.w.line(s.jacobian ? jacobian_fn + "(" + jac_args() + ");" : "z = " + fn + "(z);");
 }
-void octa_emit(const Step&, EmitState& s) { symmetry_fold(s, "formula_octa_fold_j", "cube_fold"); }
+void octa_emit(const Step&, EmitState& s) { symmetry_fold(s, "fold_octa_j", "fold_cube"); }
 void octa_eval(const Step&, RefState& s) { octa_ref(s); }
 
 // ---- tetra_fold: the tetrahedron's symmetry
-void tetra_emit(const Step&, EmitState& s) { symmetry_fold(s, "formula_tetra_fold_j", "tetra_fold"); }
+void tetra_emit(const Step&, EmitState& s) { symmetry_fold(s, "fold_tetra_j", "fold_tetra"); }
 void tetra_eval(const Step&, RefState& s) {
   reflect_all(s, {kH, kH, 0}, s.z[0] + s.z[1] < 0);
   reflect_all(s, {kH, 0, kH}, s.z[0] + s.z[2] < 0);

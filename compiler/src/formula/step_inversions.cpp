@@ -2,7 +2,7 @@
 // spherical_invert, kleinian_fold (the pseudo-Kleinian's sphere inversion),
 // surf_fold (the Amazing Surf's fold on chosen axes). An inversion in a
 // sphere is conformal with the factor R^2 / r^2; its Jacobian is
-// f (I - 2 w w^T / r^2) on the columns (stdlib formula_inversion_j).
+// f (I - 2 w w^T / r^2) on the columns (stdlib fold_inversion_j).
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -32,8 +32,8 @@ void invert_emit(const Step& st, EmitState& s) {
   s.w.line("real q = fmax(v3_dot(w, w), K(1e-30f));");
   s.w.line(fmt::format("real f = {} / q;", r2));
   if (s.jacobian) {
-    s.used.insert("formula_inversion_j");
-    s.w.line("formula_inversion_j(w, &ja, &jb, &jc, f, 2.0f / q);");
+    s.used.insert("fold_inversion_j");
+    s.w.line("fold_inversion_j(w, &ja, &jb, &jc, f, 2.0f / q);");
   } else {
     s.w.line("dr = dr * f;");
   }
@@ -56,8 +56,8 @@ void kleinian_emit(const Step& st, EmitState& s) {
   s.w.line("real q = fmax(v3_dot(z, z), K(1e-30f));");
   s.w.line(fmt::format("real k = fmax({} / q, K(1.0f));", s.lit.real(st.a[0])));
   if (s.jacobian) {
-    s.used.insert("formula_inversion_j");
-    s.w.line(fmt::format("formula_inversion_j(z, &ja, &jb, &jc, k, SEL((real)(0.0f), 2.0f / q, q < {}));", s.lit.real(st.a[0])));
+    s.used.insert("fold_inversion_j");
+    s.w.line(fmt::format("fold_inversion_j(z, &ja, &jb, &jc, k, SEL((real)(0.0f), 2.0f / q, q < {}));", s.lit.real(st.a[0])));
   } else {
     s.w.line(fmt::format("dr = dr * (k + {});", s.lit.real(st.a[1])));
   }

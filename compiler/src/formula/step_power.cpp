@@ -1,8 +1,8 @@
 // bulb_power: the White-Nylander power in spherical coordinates, any real
 // power. Its scalar derivative n r^(n-1) dr is the one the Mandelbulb has
 // always used; an integer power takes the built-in's trig-free form
-// (stdlib bulb_power_int). The Jacobian goes through the spherical
-// coordinates (stdlib formula_bulb_j, trig for every power).
+// (stdlib fold_bulb_int). The Jacobian goes through the spherical
+// coordinates (stdlib fold_bulb_j, trig for every power).
 #include <fmt/format.h>
 
 #include <cmath>
@@ -16,16 +16,16 @@ namespace {
 void bulb_emit(const Step& st, EmitState& s) {
   std::string n = s.lit.real(st.a[0]);
   if (s.jacobian) {
-    s.used.insert("formula_bulb_j");
-    s.w.line(fmt::format("formula_bulb_j(&z, &ja, &jb, &jc, {});  // bulb_power {}", n, st.a[0]));
+    s.used.insert("fold_bulb_j");
+    s.w.line(fmt::format("fold_bulb_j(&z, &ja, &jb, &jc, {});  // bulb_power {}", n, st.a[0]));
   } else if (st.a[0] >= 2 && st.a[0] <= 64 && st.a[0] == std::floor(st.a[0])) {
     // an integer power: the built-in Mandelbulb's trig-free form
-    s.used.insert("bulb_power_int");
-    s.w.line(fmt::format("{{ real rp; z = bulb_power_int(z, {0}, &rp); dr = rp * {1} * dr; }}  // bulb_power {0}, trig-free",
+    s.used.insert("fold_bulb_int");
+    s.w.line(fmt::format("{{ real rp; z = fold_bulb_int(z, {0}, &rp); dr = rp * {1} * dr; }}  // bulb_power {0}, trig-free",
                          int(st.a[0]), n));
   } else {
-    s.used.insert("formula_bulb");
-    s.w.line(fmt::format("z = formula_bulb(z, {}, &dr);  // bulb_power {}", n, st.a[0]));
+    s.used.insert("fold_bulb");
+    s.w.line(fmt::format("z = fold_bulb(z, {}, &dr);  // bulb_power {}", n, st.a[0]));
   }
 }
 

@@ -52,14 +52,14 @@ constexpr int kIcosa[] = {0, 2, 0, 1, 2, 0, 1};
 
 void icosa_emit(const Step&, EmitState& s) {
   const std::string n1 = s.lit.vec3(kN1), n2 = s.lit.vec3(kN2);
-  if (s.jacobian) s.used.insert("formula_reflect_j");
+  if (s.jacobian) s.used.insert("fold_reflect_j");
   s.w.open("{  // icosa_fold");
   for (int op : kIcosa) {
     if (op == 0) {
       if (s.jacobian) {
-        s.w.line("formula_reflect_j(&z, &ja, &jb, &jc, v3(1.0f, 0.0f, 0.0f), z.x < 0.0f);");
-        s.w.line("formula_reflect_j(&z, &ja, &jb, &jc, v3(0.0f, 1.0f, 0.0f), z.y < 0.0f);");
-        s.w.line("formula_reflect_j(&z, &ja, &jb, &jc, v3(0.0f, 0.0f, 1.0f), z.z < 0.0f);");
+        s.w.line("fold_reflect_j(&z, &ja, &jb, &jc, v3(1.0f, 0.0f, 0.0f), z.x < 0.0f);");
+        s.w.line("fold_reflect_j(&z, &ja, &jb, &jc, v3(0.0f, 1.0f, 0.0f), z.y < 0.0f);");
+        s.w.line("fold_reflect_j(&z, &ja, &jb, &jc, v3(0.0f, 0.0f, 1.0f), z.z < 0.0f);");
       } else {
         s.w.line("z = v3(fabs(z.x), fabs(z.y), fabs(z.z));");
       }
@@ -67,7 +67,7 @@ void icosa_emit(const Step&, EmitState& s) {
     }
     const std::string& n = op == 1 ? n1 : n2;
     if (s.jacobian)
-      s.w.line(fmt::format("formula_reflect_j(&z, &ja, &jb, &jc, {0}, v3_dot(z, {0}) > 0.0f);", n));
+      s.w.line(fmt::format("fold_reflect_j(&z, &ja, &jb, &jc, {0}, v3_dot(z, {0}) > 0.0f);", n));
     else
       s.w.line(fmt::format("z = v3_mad(z, {0}, -2.0f * fmax(v3_dot(z, {0}), K(0.0f)));", n));
   }

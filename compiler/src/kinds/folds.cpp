@@ -52,7 +52,7 @@ std::string orbit_sierpinski(Emitter& e) { return orbit(e, "trap_sierpinski"); }
 
 // The Menger step: |z| sorted descending, scaled about (1, 1, 1), the
 // middle slab shifted back.
-void menger_step(V3& z, double scale) {
+void fold_menger(V3& z, double scale) {
   double shift = scale - 1;
   orbit::sort_descending(z);
   for (double& c : z) c = scale * c - shift;
@@ -77,7 +77,7 @@ reference::OrbitColour colour(const ir::Node& n, const V3& p, const ir::TrapShap
   return {trap, 1.0};
 }
 reference::OrbitColour colour_menger(const ir::Node& n, const V3& p, const ir::TrapShape& shape) {
-  return colour(n, p, shape, menger_step);
+  return colour(n, p, shape, fold_menger);
 }
 reference::OrbitColour colour_sierpinski(const ir::Node& n, const V3& p, const ir::TrapShape& shape) {
   return colour(n, p, shape, sierpinski_step);
@@ -97,7 +97,7 @@ V3 folded(const ir::Node& n, const V3& p, void (*step)(V3&, double), double* s) 
 
 double distance_menger(const ir::Node& n, const V3& p) {
   double s;
-  V3 z = folded(n, p, menger_step, &s);
+  V3 z = folded(n, p, fold_menger, &s);
   // Distance to the cube [-1, 1]^3.
   V3 d{std::fabs(z[0]) - 1, std::fabs(z[1]) - 1, std::fabs(z[2]) - 1};
   V3 out{std::max(d[0], 0.0), std::max(d[1], 0.0), std::max(d[2], 0.0)};

@@ -33,9 +33,9 @@ void steps(const HybridP& h, Emitter& e, const std::string& dr, bool growth) {
     // The last step is the else branch; a one-step hybrid has no branch at all.
     std::string cond = s + 1 == count ? (s ? "else" : "") : fmt::format("{}if (k < {})", s ? "else " : "", upto);
     const bool bulb = st.formula == double(ir::HybridStep::Mandelbulb);
-    e.used.insert(bulb ? "hybrid_bulb_step" : "hybrid_box_step");
-    std::string call = bulb ? fmt::format("hybrid_bulb_step(z, {}, {}, &{})", e.real(st.power_or_scale), e.p, dr)
-                            : fmt::format("hybrid_box_step(z, {}, {}, {}, {}, {}, &{})", e.real(st.power_or_scale),
+    e.used.insert(bulb ? "fold_hybrid_bulb" : "fold_hybrid_box");
+    std::string call = bulb ? fmt::format("fold_hybrid_bulb(z, {}, {}, &{})", e.real(st.power_or_scale), e.p, dr)
+                            : fmt::format("fold_hybrid_box(z, {}, {}, {}, {}, {}, &{})", e.real(st.power_or_scale),
                                           e.real(st.min_radius * st.min_radius),
                                           e.real(st.fixed_radius * st.fixed_radius), e.real(st.folding_limit), e.p, dr);
     if (growth)

@@ -47,7 +47,7 @@ std::string emit_orbit(Emitter& e) {
 
 std::string emit_dual(Emitter& e) {
   auto b = view<JuliabulbP>(e.n);
-  return fmt::format("{}({}, {}, {}, {}, 1, {})", e.call("gn_mandelbulb"), e.p, e.real(b.power), int(b.iterations),
+  return fmt::format("{}({}, {}, {}, {}, 1, {})", e.call("deg_mandelbulb"), e.p, e.real(b.power), int(b.iterations),
                      bulb_estimator_radius(e, kPower, kBailout), e.vec3(b.c));
 }
 

@@ -73,7 +73,7 @@ std::string emit_orbit(Emitter& e) { return orbit_call(e, "trap_mandelbox", fmt:
 
 std::string emit_dual(Emitter& e) {
   auto b = view<MandelboxP>(e.n);
-  return fmt::format("{}({}, {}, {}, {}, {}, {}, {}, {}, {})", e.call("gn_mandelbox"), e.p, e.real(b.scale),
+  return fmt::format("{}({}, {}, {}, {}, {}, {}, {}, {}, {})", e.call("deg_mandelbox"), e.p, e.real(b.scale),
                      e.real(b.min_radius * b.min_radius), e.real(b.fixed_radius * b.fixed_radius),
                      e.real(b.folding_limit), int(b.iterations), int(b.julia), e.vec3(b.c), e.vec3(b.axis));
 }

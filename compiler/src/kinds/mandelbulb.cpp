@@ -64,7 +64,7 @@ std::string emit_orbit(Emitter& e) {
 
 std::string emit_dual(Emitter& e) {
   auto b = view<MandelbulbP>(e.n);
-  return fmt::format("{}({}, {}, {}, {}, 0, v3_splat(0.0f))", e.call("gn_mandelbulb"), e.p, e.real(b.power),
+  return fmt::format("{}({}, {}, {}, {}, 0, v3_splat(0.0f))", e.call("deg_mandelbulb"), e.p, e.real(b.power),
                      int(b.iterations), bulb_estimator_radius(e, kPower, kBailout));
 }
 

@@ -57,7 +57,7 @@ std::string emit_orbit(Emitter& e) {
 
 std::string emit_dual(Emitter& e) {
   auto j = view<QuaternionJuliaP>(e.n);
-  return fmt::format("{}({}, {}, {}, {}, {}, {}, {})", e.call("gn_quaternion_julia"), e.p, e.real(j.slice),
+  return fmt::format("{}({}, {}, {}, {}, {}, {}, {})", e.call("deg_quaternion_julia"), e.p, e.real(j.slice),
                      e.real(j.c[0]), e.vec3({j.c[1], j.c[2], j.c[3]}), int(j.degree), int(j.iterations),
                      e.real(j.bailout));
 }

@@ -158,7 +158,7 @@ constexpr ParamDoc k_polar_repeat_docs[] = {
 };
 constexpr ParamDoc k_repeat_docs[] = {
     {"period", "vec3", "", ">= 0", "the spacing along x, y and z; 0: not repeated along that axis"},
-    {"count", "list of 3 integers", "endless", "each 1 to 100000", "copies per axis"},
+    {"count", "list of 3 integers", "(endless)", "each 1 to 100000", "copies per axis"},
 };
 }  // namespace
 

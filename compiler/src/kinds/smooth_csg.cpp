@@ -4,9 +4,9 @@
 #include "combinator.hpp"
 #include "sdfc/kinds/params.hpp"
 
-SDFC_KIND(SmoothUnion,        13, "smooth_union",        Combinator, -1, "radius",                       "op_smooth_union")
-SDFC_KIND(SmoothIntersection, 14, "smooth_intersection", Combinator, -1, "radius",                       "op_smooth_intersection")
-SDFC_KIND(SmoothDifference,   15, "smooth_difference",   Combinator, -1, "radius",                       "op_smooth_difference")
+SDFC_KIND(SmoothUnion,        13, "smooth_union",        Combinator, -1, "radius",                       "op_blend_polynomial")
+SDFC_KIND(SmoothIntersection, 14, "smooth_intersection", Combinator, -1, "radius",                       "op_blend_polynomial")
+SDFC_KIND(SmoothDifference,   15, "smooth_difference",   Combinator, -1, "radius",                       "op_blend_polynomial")
 
 namespace sdfc::kinds {
 namespace {
@@ -55,7 +55,18 @@ Carried walk(Walker& w, const ir::Node& n, const std::string& p) {
   const std::string fn(ir::info(n.kind).stdlib_function);
   std::string radius = w.param(n, SDFC_AT(SmoothP, radius));
   return combine(w, n, p,
-                 {S, [&](auto& d, auto& b) { return fmt::format("{}({}, {}, {})", w.call(fn), d, b, radius); },
+                 {S,
+                  [&](const std::string& d, const std::string& b) {
+                    // One family: the intersection and the difference are the
+                    // union's duals, -U(-a, -b) and -U(-a, b).
+                    auto blend = [&](const std::string& x, const std::string& y) {
+                      return fmt::format("{}({}, {}, {})", w.call(fn), x, y, radius);
+                    };
+                    auto neg = [](const std::string& x) { return x[0] == '-' ? "-(" + x + ")" : "-" + x; };
+                    return S == Select::Nearer    ? blend(d, b)
+                           : S == Select::Farther ? "-" + blend(neg(d), neg(b))
+                                                  : "-" + blend(neg(d), b);
+                  },
                   weight(n)});
 }
 
@@ -68,13 +79,13 @@ Dual dual(DualWalker& w, const ir::Node& n, const std::string& p) {
   return fold_dual(w, n, p, [&](const Dual& v, const Dual& c) {
     if (S == Select::Nearer) {
       w.line(fmt::format("{} = opg_smooth({}, {}, {}, {}, {}, 1.0f);", v.g, v.d, c.d, v.g, c.g, k));
-      w.line(fmt::format("{} = {}({}, {}, {});", v.d, w.call("op_smooth_union"), v.d, c.d, k));
+      w.line(fmt::format("{} = {}({}, {}, {});", v.d, w.call("op_blend_polynomial"), v.d, c.d, k));
     } else if (S == Select::Farther) {
       w.line(fmt::format("{} = opg_smooth({}, {}, {}, {}, {}, -1.0f);", v.g, v.d, c.d, v.g, c.g, k));
-      w.line(fmt::format("{} = {}({}, {}, {});", v.d, w.call("op_smooth_intersection"), v.d, c.d, k));
+      w.line(fmt::format("{} = -{}(-{}, -{}, {});", v.d, w.call("op_blend_polynomial"), v.d, c.d, k));
     } else {
       w.line(fmt::format("{} = opg_smooth({}, -{}, {}, v3_scale({}, -1.0f), {}, -1.0f);", v.g, v.d, c.d, v.g, c.g, k));
-      w.line(fmt::format("{} = {}({}, -{}, {});", v.d, w.call("op_smooth_intersection"), v.d, c.d, k));
+      w.line(fmt::format("{} = -{}(-{}, {}, {});", v.d, w.call("op_blend_polynomial"), v.d, c.d, k));
     }
   });
 }

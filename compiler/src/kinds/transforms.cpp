@@ -207,7 +207,7 @@ constexpr ParamDoc k_scale_docs[] = {
     {"scale", "number", "", "> 0, at most 10000", "the factor; may be an expression of time"},
 };
 constexpr ParamDoc k_step_factor_docs[] = {
-    {"step_factor", "number", "the fractal's own (1 for other nodes)", "> 0, at most 2", "the factor on this node's distance"},
+    {"step_factor", "number", "(the fractal's own; 1 for other nodes)", "> 0, at most 2", "the factor on this node's distance"},
 };
 }  // namespace
 

@@ -16,7 +16,7 @@ real scene_dist(TIME_PARAM vec3 p)
     real d8 = sd_cylinder(p7, 0.12f, 0.8f);  // cylinder radius=0.12 half_height=0.8  (animated.yaml:30)
     real d9 = sd_box(p7, v3(0.25f, 0.25f, 0.25f), 0.0f);  // box hx=0.25 hy=0.25 hz=0.25 radius=0  (animated.yaml:29)
     real d10 = d8;  // smooth_union radius="(0.2 + (0.15 * sin((1.5 * time))))"  (animated.yaml:26)
-    d10 = op_smooth_union(d10, d9, (0.2f + (0.15f * sin((1.5f * time)))));
+    d10 = op_blend_polynomial(d10, d9, (0.2f + (0.15f * sin((1.5f * time)))));
     real d11 = d0;  // union  (animated.yaml:17)
     d11 = fmin(d11, d2);
     d11 = fmin(d11, d6);
@@ -44,7 +44,7 @@ real scene_dist_mat(TIME_PARAM vec3 p, real* mat)
     real d9 = sd_cylinder(p8, 0.12f, 0.8f);  // cylinder radius=0.12 half_height=0.8  (animated.yaml:30)
     real d10 = sd_box(p8, v3(0.25f, 0.25f, 0.25f), 0.0f);  // box hx=0.25 hy=0.25 hz=0.25 radius=0  (animated.yaml:29)
     real d11 = d9;  // smooth_union radius="(0.2 + (0.15 * sin((1.5 * time))))"  (animated.yaml:26)
-    d11 = op_smooth_union(d11, d10, (0.2f + (0.15f * sin((1.5f * time)))));
+    d11 = op_blend_polynomial(d11, d10, (0.2f + (0.15f * sin((1.5f * time)))));
     real d13 = d0;  // union  (animated.yaml:17)
     real m14 = (real)(3.0f);
     m14 = SEL(m14, m3, d2 < d13);

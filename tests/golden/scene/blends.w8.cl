@@ -11,13 +11,13 @@ real scene_dist(TIME_PARAM vec3 p)
     real d6 = sd_sphere(p5, 0.72f);  // sphere radius=0.72  (blends.yaml:46)
     real d7 = sd_box(p5, v3(0.55f, 0.55f, 0.55f), 0.0f);  // box hx=0.55 hy=0.55 hz=0.55 radius=0  (blends.yaml:45)
     real d8 = d6;  // smooth_intersection radius=0.25  (blends.yaml:42)
-    d8 = op_smooth_intersection(d8, d7, 0.25f);
+    d8 = -op_blend_polynomial(-d8, -d7, 0.25f);
     vec3 p9 = v3_sub(p, v3(3.0f, 0.0f, 0.0f));  // translate x=3 y=0 z=0  (blends.yaml:53)
     real d10 = sd_box(p9, v3(0.55f, 0.55f, 0.55f), 0.05f);  // box hx=0.55 hy=0.55 hz=0.55 radius=0.05  (blends.yaml:51)
     vec3 p11 = v3_sub(p9, v3(0.0f, -0.55f, 0.3f));  // translate x=0 y=-0.55 z=0.3  (blends.yaml:52)
     real d12 = sd_sphere(p11, 0.45f);  // sphere radius=0.45  (blends.yaml:26)
     real d13 = d10;  // smooth_difference radius=0.2  (blends.yaml:48)
-    d13 = op_smooth_difference(d13, d12, 0.2f);
+    d13 = -op_blend_polynomial(-d13, d12, 0.2f);
     vec3 p14 = v3_sub(p, v3(-1.0f, 0.0f, 0.0f));  // translate x=-1 y=0 z=0  (blends.yaml:41)
     real d15 = sd_torus(p14, 0.55f, 0.15f);  // torus major=0.55 minor=0.15  (blends.yaml:39)
     real d16 = sd_cylinder(p14, 0.2f, 0.7f);  // cylinder radius=0.2 half_height=0.7  (blends.yaml:40)
@@ -38,7 +38,7 @@ real scene_dist(TIME_PARAM vec3 p)
     vec3 p29 = v3_sub(p26, v3(0.4f, 0.0f, 0.3f));  // translate x=0.4 y=0 z=0.3  (blends.yaml:26)
     real d30 = sd_sphere(p29, 0.45f);  // sphere radius=0.45  (blends.yaml:26)
     real d31 = d28;  // smooth_union radius=0.5  (blends.yaml:22)
-    d31 = op_smooth_union(d31, d30, 0.5f);
+    d31 = op_blend_polynomial(d31, d30, 0.5f);
     real d32 = d4;  // union  (blends.yaml:21)
     d32 = fmin(d32, d8);
     d32 = fmin(d32, d13);
@@ -66,14 +66,14 @@ real scene_dist_mat(TIME_PARAM vec3 p, real* mat)
     real d9 = d7;  // smooth_intersection radius=0.25  (blends.yaml:42)
     real m10 = (real)(1.0f);
     m10 = SEL(m10, (real)(3.0f), d8 > d9);
-    d9 = op_smooth_intersection(d9, d8, 0.25f);
+    d9 = -op_blend_polynomial(-d9, -d8, 0.25f);
     vec3 p11 = v3_sub(p, v3(3.0f, 0.0f, 0.0f));  // translate x=3 y=0 z=0  (blends.yaml:53)
     real d12 = sd_box(p11, v3(0.55f, 0.55f, 0.55f), 0.05f);  // box hx=0.55 hy=0.55 hz=0.55 radius=0.05  (blends.yaml:51)
     vec3 p13 = v3_sub(p11, v3(0.0f, -0.55f, 0.3f));  // translate x=0 y=-0.55 z=0.3  (blends.yaml:52)
     real d14 = sd_sphere(p13, 0.45f);  // sphere radius=0.45  (blends.yaml:26)
     real d15 = d12;  // smooth_difference radius=0.2  (blends.yaml:48)
     real m16 = (real)(4.0f);
-    d15 = op_smooth_difference(d15, d14, 0.2f);
+    d15 = -op_blend_polynomial(-d15, d14, 0.2f);
     vec3 p17 = v3_sub(p, v3(-1.0f, 0.0f, 0.0f));  // translate x=-1 y=0 z=0  (blends.yaml:41)
     real d18 = sd_torus(p17, 0.55f, 0.15f);  // torus major=0.55 minor=0.15  (blends.yaml:39)
     real d19 = sd_cylinder(p17, 0.2f, 0.7f);  // cylinder radius=0.2 half_height=0.7  (blends.yaml:40)
@@ -100,7 +100,7 @@ real scene_dist_mat(TIME_PARAM vec3 p, real* mat)
     real d36 = d33;  // smooth_union radius=0.5  (blends.yaml:22)
     real m37 = (real)(1.0f);
     m37 = SEL(m37, (real)(2.0f), d35 < d36);
-    d36 = op_smooth_union(d36, d35, 0.5f);
+    d36 = op_blend_polynomial(d36, d35, 0.5f);
     real d38 = d4;  // union  (blends.yaml:21)
     real m39 = m5;
     m39 = SEL(m39, m10, d9 < d38);
@@ -152,7 +152,7 @@ real scene_material(TIME_PARAM vec3 p, mat_record* out)
     mat_record r16 = r11;
     r16 = mat_mix(r16, r13, op_weight_polynomial(-d14, -d12, (real)(0.25f)));  // blend weight
     m15 = SEL(m15, (real)(3.0f), d12 > d14);
-    d14 = op_smooth_intersection(d14, d12, 0.25f);
+    d14 = -op_blend_polynomial(-d14, -d12, 0.25f);
     vec3 p17 = v3_sub(p, v3(3.0f, 0.0f, 0.0f));  // translate x=3 y=0 z=0  (blends.yaml:53)
     real d18 = sd_box(p17, v3(0.55f, 0.55f, 0.55f), 0.05f);  // box hx=0.55 hy=0.55 hz=0.55 radius=0.05  (blends.yaml:51)
     mat_record r19;  // material 4 'green'
@@ -167,7 +167,7 @@ real scene_material(TIME_PARAM vec3 p, mat_record* out)
     real m24 = (real)(4.0f);
     mat_record r25 = r19;
     r25 = mat_mix(r25, r22, op_weight_polynomial(-d23, d21, (real)(0.2f)));  // blend weight
-    d23 = op_smooth_difference(d23, d21, 0.2f);
+    d23 = -op_blend_polynomial(-d23, d21, 0.2f);
     vec3 p26 = v3_sub(p, v3(-1.0f, 0.0f, 0.0f));  // translate x=-1 y=0 z=0  (blends.yaml:41)
     real d27 = sd_torus(p26, 0.55f, 0.15f);  // torus major=0.55 minor=0.15  (blends.yaml:39)
     mat_record r28;  // material 4 'green'
@@ -221,7 +221,7 @@ real scene_material(TIME_PARAM vec3 p, mat_record* out)
     mat_record r56 = r50;
     r56 = mat_mix(r56, r53, op_weight_polynomial(d54, d52, (real)(0.5f)));  // blend weight
     m55 = SEL(m55, (real)(2.0f), d52 < d54);
-    d54 = op_smooth_union(d54, d52, 0.5f);
+    d54 = op_blend_polynomial(d54, d52, 0.5f);
     real d57 = d6;  // union  (blends.yaml:21)
     real m58 = m7;
     mat_record r59 = r8;

@@ -30,7 +30,7 @@ real scene_dist(TIME_PARAM vec3 p)
         real d16 = sd_torus(p15, 0.45f, 0.12f);  // torus major=0.45 minor=0.12  (fractal-zoo.yaml:46)
         real d17 = sd_capsule(p15, v3(0.0f, 0.0f, -0.3f), v3(0.0f, 0.0f, 0.5f), 0.1f);  // capsule ax=0 ay=0 az=-0.3 bx=0 by=0 bz=0.5 radius=0.1  (fractal-zoo.yaml:47)
         real d18 = d16;  // smooth_union radius=0.15  (fractal-zoo.yaml:43)
-        d18 = op_smooth_union(d18, d17, 0.15f);
+        d18 = op_blend_polynomial(d18, d17, 0.15f);
         vec3 p19 = v3_sub(p, v3(0.0f, 0.5f, -0.45f));  // translate x=0 y=0.5 z=-0.45  (fractal-zoo.yaml:53)
         real d20 = sd_box(p19, v3(4.5f, 3.0f, 0.05f), 0.0f);  // box hx=4.5 hy=3 hz=0.05 radius=0  (fractal-zoo.yaml:51)
         vec3 p21 = v3_sub(p, v3(0.0f, 0.0f, -0.2f));  // translate x=0 y=0 z=-0.2  (fractal-zoo.yaml:26)
@@ -98,7 +98,7 @@ real scene_dist_mat(TIME_PARAM vec3 p, real* mat)
         real d19 = sd_torus(p18, 0.45f, 0.12f);  // torus major=0.45 minor=0.12  (fractal-zoo.yaml:46)
         real d20 = sd_capsule(p18, v3(0.0f, 0.0f, -0.3f), v3(0.0f, 0.0f, 0.5f), 0.1f);  // capsule ax=0 ay=0 az=-0.3 bx=0 by=0 bz=0.5 radius=0.1  (fractal-zoo.yaml:47)
         real d21 = d19;  // smooth_union radius=0.15  (fractal-zoo.yaml:43)
-        d21 = op_smooth_union(d21, d20, 0.15f);
+        d21 = op_blend_polynomial(d21, d20, 0.15f);
         vec3 p23 = v3_sub(p, v3(0.0f, 0.5f, -0.45f));  // translate x=0 y=0.5 z=-0.45  (fractal-zoo.yaml:53)
         real d24 = sd_box(p23, v3(4.5f, 3.0f, 0.05f), 0.0f);  // box hx=4.5 hy=3 hz=0.05 radius=0  (fractal-zoo.yaml:51)
         vec3 p25 = v3_sub(p, v3(0.0f, 0.0f, -0.2f));  // translate x=0 y=0 z=-0.2  (fractal-zoo.yaml:26)
@@ -181,7 +181,7 @@ real scene_iterations(TIME_PARAM vec3 p)
         real d24 = sd_torus(p23, 0.45f, 0.12f);  // torus major=0.45 minor=0.12  (fractal-zoo.yaml:46)
         real d25 = sd_capsule(p23, v3(0.0f, 0.0f, -0.3f), v3(0.0f, 0.0f, 0.5f), 0.1f);  // capsule ax=0 ay=0 az=-0.3 bx=0 by=0 bz=0.5 radius=0.1  (fractal-zoo.yaml:47)
         real d26 = d24;  // smooth_union radius=0.15  (fractal-zoo.yaml:43)
-        d26 = op_smooth_union(d26, d25, 0.15f);
+        d26 = op_blend_polynomial(d26, d25, 0.15f);
         vec3 p28 = v3_sub(p, v3(0.0f, 0.5f, -0.45f));  // translate x=0 y=0.5 z=-0.45  (fractal-zoo.yaml:53)
         real d29 = sd_box(p28, v3(4.5f, 3.0f, 0.05f), 0.0f);  // box hx=4.5 hy=3 hz=0.05 radius=0  (fractal-zoo.yaml:51)
         vec3 p30 = v3_sub(p, v3(0.0f, 0.0f, -0.2f));  // translate x=0 y=0 z=-0.2  (fractal-zoo.yaml:26)

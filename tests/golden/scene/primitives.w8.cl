@@ -5,12 +5,12 @@ real scene_dist(TIME_PARAM vec3 p)
     real d1 = sd_box(p0, v3(0.6f, 0.6f, 0.6f), 0.0f);  // box hx=0.6 hy=0.6 hz=0.6 radius=0  (primitives.yaml:63)
     real d2 = sd_sphere(p0, 0.78f);  // sphere radius=0.78  (primitives.yaml:64)
     real d3 = d1;  // smooth_intersection radius=0.2  (primitives.yaml:60)
-    d3 = op_smooth_intersection(d3, d2, 0.2f);
+    d3 = -op_blend_polynomial(-d3, -d2, 0.2f);
     vec3 p4 = v3_sub(p, v3(2.5f, 2.0f, -0.15f));  // translate x=2.5 y=2 z=-0.15  (primitives.yaml:72)
     real d5 = sd_box(p4, v3(0.6f, 0.6f, 0.6f), 0.05f);  // box hx=0.6 hy=0.6 hz=0.6 radius=0.05  (primitives.yaml:70)
     real d6 = sd_cylinder(p4, 0.4f, 1.0f);  // cylinder radius=0.4 half_height=1  (primitives.yaml:71)
     real d7 = d5;  // smooth_difference radius=0.15  (primitives.yaml:67)
-    d7 = op_smooth_difference(d7, d6, 0.15f);
+    d7 = -op_blend_polynomial(-d7, d6, 0.15f);
     vec3 p8 = v3_sub(p, v3(-2.0f, -1.0f, -0.15f));  // translate x=-2 y=-1 z=-0.15  (primitives.yaml:28)
     vec3 p9 = v3_mat(p8, 0.8660254f, 0.5f, 0.0f, -0.5f, 0.8660254f, 0.0f, 0.0f, 0.0f, 1.0f);  // rotate  (primitives.yaml:27)
     real d10 = sd_box(p9, v3(0.65f, 0.65f, 0.65f), 0.15f);  // box hx=0.65 hy=0.65 hz=0.65 radius=0.15  (primitives.yaml:26)
@@ -44,7 +44,7 @@ real scene_dist(TIME_PARAM vec3 p)
     vec3 p35 = v3_sub(p32, v3(0.45f, 0.0f, 0.25f));  // translate x=0.45 y=0 z=0.25  (primitives.yaml:57)
     real d36 = sd_sphere(p35, 0.45f);  // sphere radius=0.45  (primitives.yaml:56)
     real d37 = d34;  // smooth_union radius=0.4  (primitives.yaml:51)
-    d37 = op_smooth_union(d37, d36, 0.4f);
+    d37 = op_blend_polynomial(d37, d36, 0.4f);
     vec3 p38 = v3_sub(p, v3(-4.0f, -1.0f, 0.0f));  // translate x=-4 y=-1 z=0  (primitives.yaml:24)
     real d39 = sd_sphere(p38, 0.7f);  // sphere radius=0.7  (primitives.yaml:23)
     real d40 = d3;  // union  (primitives.yaml:19)
@@ -68,12 +68,12 @@ real scene_dist_mat(TIME_PARAM vec3 p, real* mat)
     real d1 = sd_box(p0, v3(0.6f, 0.6f, 0.6f), 0.0f);  // box hx=0.6 hy=0.6 hz=0.6 radius=0  (primitives.yaml:63)
     real d2 = sd_sphere(p0, 0.78f);  // sphere radius=0.78  (primitives.yaml:64)
     real d3 = d1;  // smooth_intersection radius=0.2  (primitives.yaml:60)
-    d3 = op_smooth_intersection(d3, d2, 0.2f);
+    d3 = -op_blend_polynomial(-d3, -d2, 0.2f);
     vec3 p5 = v3_sub(p, v3(2.5f, 2.0f, -0.15f));  // translate x=2.5 y=2 z=-0.15  (primitives.yaml:72)
     real d6 = sd_box(p5, v3(0.6f, 0.6f, 0.6f), 0.05f);  // box hx=0.6 hy=0.6 hz=0.6 radius=0.05  (primitives.yaml:70)
     real d7 = sd_cylinder(p5, 0.4f, 1.0f);  // cylinder radius=0.4 half_height=1  (primitives.yaml:71)
     real d8 = d6;  // smooth_difference radius=0.15  (primitives.yaml:67)
-    d8 = op_smooth_difference(d8, d7, 0.15f);
+    d8 = -op_blend_polynomial(-d8, d7, 0.15f);
     vec3 p10 = v3_sub(p, v3(-2.0f, -1.0f, -0.15f));  // translate x=-2 y=-1 z=-0.15  (primitives.yaml:28)
     vec3 p11 = v3_mat(p10, 0.8660254f, 0.5f, 0.0f, -0.5f, 0.8660254f, 0.0f, 0.0f, 0.0f, 1.0f);  // rotate  (primitives.yaml:27)
     real d12 = sd_box(p11, v3(0.65f, 0.65f, 0.65f), 0.15f);  // box hx=0.65 hy=0.65 hz=0.65 radius=0.15  (primitives.yaml:26)
@@ -107,7 +107,7 @@ real scene_dist_mat(TIME_PARAM vec3 p, real* mat)
     vec3 p39 = v3_sub(p36, v3(0.45f, 0.0f, 0.25f));  // translate x=0.45 y=0 z=0.25  (primitives.yaml:57)
     real d40 = sd_sphere(p39, 0.45f);  // sphere radius=0.45  (primitives.yaml:56)
     real d41 = d38;  // smooth_union radius=0.4  (primitives.yaml:51)
-    d41 = op_smooth_union(d41, d40, 0.4f);
+    d41 = op_blend_polynomial(d41, d40, 0.4f);
     vec3 p43 = v3_sub(p, v3(-4.0f, -1.0f, 0.0f));  // translate x=-4 y=-1 z=0  (primitives.yaml:24)
     real d44 = sd_sphere(p43, 0.7f);  // sphere radius=0.7  (primitives.yaml:23)
     real d45 = d3;  // union  (primitives.yaml:19)

@@ -9,7 +9,7 @@ namespace sdfc::kinds {
 struct ParamDoc {
   std::string_view name;      // the YAML key
   std::string_view type;      // "number", "vec3", "integer", "bool", "one of a|b|c", "node", "list of nodes"
-  std::string_view fallback;  // the default as a scene writes it; empty: required
+  std::string_view fallback;  // the default as a scene writes it; empty: required; "(...)": said in words
   std::string_view range;     // e.g. "> 0", "1 to 64"; empty: any
   std::string_view what;      // one line for people who make images
 };
