@@ -99,11 +99,7 @@ Carried walk(Walker& w, const ir::Node& n, const std::string& p) {
     std::string steps = style >= 4 ? ", " + w.lit().typed(q.steps) : "";
     return fmt::format("{}({}, {}, (real)({}){})", w.call(fns[style]), a, b, w.param(n, SDFC_AT(BlendP, radius)), steps);
   };
-  auto fold = [&](const std::string& d, const std::string& b) {
-    return S == Select::Nearer    ? blend(d, b)
-           : S == Select::Farther ? "-" + blend("-" + d, "-" + b)
-                                  : "-" + blend("-" + d, b);
-  };
+  auto fold = [&](const std::string& d, const std::string& b) { return dual_fold(S, d, b, blend); };
   return combine(w, n, p, {S, fold, weight(n)});
 }
 

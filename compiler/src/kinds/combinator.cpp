@@ -83,6 +83,14 @@ bool culls_last_child(const Walker& w, const ir::Node& n, const Fold& f) {
   return last.kind == ir::Kind::ObjectSet && !last.props.corrected;
 }
 
+std::string dual_fold(Select s, const std::string& d, const std::string& b,
+                      const std::function<std::string(const std::string&, const std::string&)>& blend) {
+  auto neg = [](const std::string& x) { return x[0] == '-' ? "-(" + x + ")" : "-" + x; };
+  return s == Select::Nearer    ? blend(d, b)
+         : s == Select::Farther ? "-" + blend(neg(d), neg(b))
+                                : "-" + blend(neg(d), b);
+}
+
 Carried combine(Walker& w, const ir::Node& n, const std::string& p, const Fold& f) {
   const codegen::detail::Literals& lit = w.lit();
   const bool cull = culls_last_child(w, n, f);

@@ -40,6 +40,13 @@ struct Fold {
 };
 Carried combine(Walker& w, const ir::Node& n, const std::string& p, const Fold& f);
 
+// A smooth family's fold from its union-style blend U: the union is U(d, b),
+// the intersection and the difference its duals -U(-d, -b) and -U(-d, b).
+// Negation brackets an expression that already starts with '-', so the
+// kernel never reads "--" as a decrement.
+std::string dual_fold(Select s, const std::string& d, const std::string& b,
+                      const std::function<std::string(const std::string&, const std::string&)>& blend);
+
 // render.normals: dual: the children's distances and gradients, folded
 // into v (the first child's to start with) by step(v, next child).
 Dual fold_dual(DualWalker& w, const ir::Node& n, const std::string& p,

@@ -57,15 +57,9 @@ Carried walk(Walker& w, const ir::Node& n, const std::string& p) {
   return combine(w, n, p,
                  {S,
                   [&](const std::string& d, const std::string& b) {
-                    // One family: the intersection and the difference are the
-                    // union's duals, -U(-a, -b) and -U(-a, b).
-                    auto blend = [&](const std::string& x, const std::string& y) {
+                    return dual_fold(S, d, b, [&](const std::string& x, const std::string& y) {
                       return fmt::format("{}({}, {}, {})", w.call(fn), x, y, radius);
-                    };
-                    auto neg = [](const std::string& x) { return x[0] == '-' ? "-(" + x + ")" : "-" + x; };
-                    return S == Select::Nearer    ? blend(d, b)
-                           : S == Select::Farther ? "-" + blend(neg(d), neg(b))
-                                                  : "-" + blend(neg(d), b);
+                    });
                   },
                   weight(n)});
 }
