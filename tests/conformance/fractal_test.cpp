@@ -105,6 +105,10 @@ std::vector<Group> groups() {
         {"preset_xenodreambuie", "xenodreambuie: {iterations: 8}", 1.6},
         {"preset_eiffie_msltoe", "eiffie_msltoe: {iterations: 8, julia: [0.3, 0.6, 0.1]}", 2.0},
         {"preset_koch", "koch: {iterations: 8}", 2.0},
+        {"preset_abox_mod11", "abox_mod11: {scale: -1.5, iterations: 10}", 2.2},
+        {"preset_amazing_surf_mod2", "amazing_surf_mod2: {scale: 1.7, rotation_axis: [1, 0, 1], rotation_angle: 20, iterations: 10}", 2.2},
+        {"preset_amazing_surf_mod4", "amazing_surf_mod4: {scale: 1.8, min_r2: 0.3, rotation_axis: [1, 1, 0], rotation_angle: 30, iterations: 10}", 2.2},
+        {"preset_abox_mod15", "abox_mod15: {scale: -1.5, offset: [0.1, 0, 0], iterations: 10}", 2.2},
         {"chain_new_folds",
          "formula: {iterations: 10, iterate: [{polyfold: {order: 5, until: 2}}, icosa_fold, {surf_fold: {limit: [0.9, 1, 1.1], axes: [1, 1, 1]}},"
          " {kleinian_fold: {min_r2: 0.4}}, {spherical_invert: {radius: 1.2, centre: [0.1, 0, 0], from: 1, until: 2}}, {scale: -1.8}, add_c]}",

@@ -7,12 +7,14 @@ namespace sdfc::formula {
 extern const Preset kMandelbulbPreset, kMandelboxPreset, kMengerPreset, kSierpinskiPreset, kKifsPreset;
 extern const Preset kBulbPower2Preset, kPseudoKleinianPreset, kAmazingSurfPreset, kBoxFoldBulbPow2Preset;
 extern const Preset kXenodreambuiePreset, kEiffieMsltoePreset, kKochPreset;
+extern const Preset kAboxMod11Preset, kAmazingSurfMod2Preset, kAmazingSurfMod4Preset, kAboxMod15Preset;
 
 const std::vector<const Preset*>& presets() {
   static const std::vector<const Preset*> all =
       sorted_by_name<Preset>({&kMandelbulbPreset, &kMandelboxPreset, &kMengerPreset, &kSierpinskiPreset, &kKifsPreset,
                               &kBulbPower2Preset, &kPseudoKleinianPreset, &kAmazingSurfPreset, &kBoxFoldBulbPow2Preset,
-                              &kXenodreambuiePreset, &kEiffieMsltoePreset, &kKochPreset});
+                              &kXenodreambuiePreset, &kEiffieMsltoePreset, &kKochPreset,
+                              &kAboxMod11Preset, &kAmazingSurfMod2Preset, &kAmazingSurfMod4Preset, &kAboxMod15Preset});
   return all;
 }
 
