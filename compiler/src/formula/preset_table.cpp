@@ -6,11 +6,13 @@ namespace sdfc::formula {
 
 extern const Preset kMandelbulbPreset, kMandelboxPreset, kMengerPreset, kSierpinskiPreset, kKifsPreset;
 extern const Preset kBulbPower2Preset, kPseudoKleinianPreset, kAmazingSurfPreset, kBoxFoldBulbPow2Preset;
+extern const Preset kMengerMod1Preset, kMengerSmoothPreset, kMenger3Preset, kMengerCrossKifsPreset;
 
 const std::vector<const Preset*>& presets() {
   static const std::vector<const Preset*> all =
       sorted_by_name<Preset>({&kMandelbulbPreset, &kMandelboxPreset, &kMengerPreset, &kSierpinskiPreset, &kKifsPreset,
-                              &kBulbPower2Preset, &kPseudoKleinianPreset, &kAmazingSurfPreset, &kBoxFoldBulbPow2Preset});
+                              &kBulbPower2Preset, &kPseudoKleinianPreset, &kAmazingSurfPreset, &kBoxFoldBulbPow2Preset,
+                              &kMengerMod1Preset, &kMengerSmoothPreset, &kMenger3Preset, &kMengerCrossKifsPreset});
   return all;
 }
 
