@@ -109,6 +109,8 @@ std::vector<Group> groups() {
         {"preset_amazing_surf_mod4", "amazing_surf_mod4: {scale: 1.8, min_r2: 0.3, rotation_axis: [1, 1, 0], rotation_angle: 30, iterations: 10}", 2.2},
         {"preset_abox_mod15", "abox_mod15: {scale: -1.5, offset: [0.1, 0, 0], iterations: 10}", 2.2},
         {"preset_koch", "koch: {iterations: 8}", 2.0},
+        {"preset_menger_mod1", "menger_mod1: {multiplier: [1, 0.85, 1], offset: [0.15, 0, 0], iterations: 8}", 2.2},
+        {"preset_menger_cross_kifs", "menger_cross_kifs: {iterations: 8}", 3.0},
         {"chain_new_folds",
          "formula: {iterations: 10, iterate: [{polyfold: {order: 5, until: 2}}, icosa_fold, {surf_fold: {limit: [0.9, 1, 1.1], axes: [1, 1, 1]}},"
          " {kleinian_fold: {min_r2: 0.4}}, {spherical_invert: {radius: 1.2, centre: [0.1, 0, 0], from: 1, until: 2}}, {scale: -1.8}, add_c]}",

@@ -72,11 +72,11 @@ std::vector<std::string> fractal_examples() {
   // in the CPU reference for this test's time; its image is held to
   // bulb2's instead, tests/e2e/formula_image_test.cpp)
   // The presets' examples too (but not those made of expr steps:
-  // mandelbulb_power_2, box_fold_bulb_pow2).
+  // mandelbulb_power_2, box_fold_bulb_pow2, menger_smooth).
   for (const char* f : {"mandelbox_chain", "mandelbulb_chain", "mandelbulb_jacobian", "bulb2", "preset_mandelbox",
                         "preset_mandelbulb", "menger_sponge", "sierpinski_preset", "kaleidoscopic_ifs", "pseudo_kleinian",
                         "amazing_surf", "icosa_ifs", "xenodreambuie", "koch", "abox_mod11", "amazing_surf_mod2",
-                        "amazing_surf_mod4", "abox_mod15"})
+                        "amazing_surf_mod4", "abox_mod15", "menger_mod1", "menger3", "menger_cross_kifs"})
     scenes.push_back(std::filesystem::path(SDFC_SOURCE_DIR) / "examples" / "formulas" / (std::string(f) + ".yaml"));
   for (const auto& p : scenes) {
     ir::Module m = build_module(load_yaml_file(p.string()), p.string());

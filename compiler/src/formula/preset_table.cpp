@@ -8,13 +8,15 @@ extern const Preset kMandelbulbPreset, kMandelboxPreset, kMengerPreset, kSierpin
 extern const Preset kBulbPower2Preset, kPseudoKleinianPreset, kAmazingSurfPreset, kBoxFoldBulbPow2Preset;
 extern const Preset kXenodreambuiePreset, kEiffieMsltoePreset, kKochPreset;
 extern const Preset kAboxMod11Preset, kAmazingSurfMod2Preset, kAmazingSurfMod4Preset, kAboxMod15Preset;
+extern const Preset kMengerMod1Preset, kMengerSmoothPreset, kMenger3Preset, kMengerCrossKifsPreset;
 
 const std::vector<const Preset*>& presets() {
   static const std::vector<const Preset*> all =
       sorted_by_name<Preset>({&kMandelbulbPreset, &kMandelboxPreset, &kMengerPreset, &kSierpinskiPreset, &kKifsPreset,
                               &kBulbPower2Preset, &kPseudoKleinianPreset, &kAmazingSurfPreset, &kBoxFoldBulbPow2Preset,
                               &kXenodreambuiePreset, &kEiffieMsltoePreset, &kKochPreset,
-                              &kAboxMod11Preset, &kAmazingSurfMod2Preset, &kAmazingSurfMod4Preset, &kAboxMod15Preset});
+                              &kAboxMod11Preset, &kAmazingSurfMod2Preset, &kAmazingSurfMod4Preset, &kAboxMod15Preset,
+                              &kMengerMod1Preset, &kMengerSmoothPreset, &kMenger3Preset, &kMengerCrossKifsPreset});
   return all;
 }
 

@@ -191,8 +191,9 @@ void read_settings(frontend::MapReader& m, Chain& c, int iterations, double bail
     c.julia = true;
     c.c = m.vec3("julia", {0, 0, 0});
   }
-  const char* fallback = c.de == DeChoice::Kleinian ? "kleinian" : "auto";
-  std::string de = m.word("de", fallback, {"auto", "linear", "log", "jacobian", "kleinian"});
+  // A preset's own choice is the default (the words in DeChoice's order).
+  static const char* const kWords[] = {"auto", "linear", "log", "jacobian", "kleinian"};
+  std::string de = m.word("de", kWords[int(c.de)], {"auto", "linear", "log", "jacobian", "kleinian"});
   c.de = de == "linear"     ? DeChoice::Linear
          : de == "log"      ? DeChoice::Log
          : de == "jacobian" ? DeChoice::Jacobian
