@@ -104,13 +104,6 @@ std::vector<Group> groups() {
         {"preset_amazing_surf", "amazing_surf: {scale: 1.8, rotation_axis: [1, 1, 0], rotation_angle: 30, iterations: 10}", 2.2},
         {"preset_xenodreambuie", "xenodreambuie: {iterations: 8}", 1.6},
         {"preset_eiffie_msltoe", "eiffie_msltoe: {iterations: 8, julia: [0.3, 0.6, 0.1]}", 2.0},
-        {"preset_abox_mod11", "abox_mod11: {scale: -1.5, iterations: 10}", 2.2},
-        {"preset_amazing_surf_mod2", "amazing_surf_mod2: {scale: 1.8, rotation_axis: [1, 1, 0], rotation_angle: 30, iterations: 10}", 2.2},
-        {"preset_amazing_surf_mod4", "amazing_surf_mod4: {scale: 1.8, min_r2: 0.3, rotation_axis: [1, 1, 0], rotation_angle: 30, iterations: 10}", 2.2},
-        {"preset_abox_mod15", "abox_mod15: {scale: -1.5, offset: [0.1, 0, 0], iterations: 10}", 2.2},
-        {"preset_koch", "koch: {iterations: 8}", 2.0},
-        {"preset_menger_mod1", "menger_mod1: {multiplier: [1, 0.85, 1], offset: [0.15, 0, 0], iterations: 8}", 2.2},
-        {"preset_menger_cross_kifs", "menger_cross_kifs: {iterations: 8}", 3.0},
         {"chain_new_folds",
          "formula: {iterations: 10, iterate: [{polyfold: {order: 5, until: 2}}, icosa_fold, {surf_fold: {limit: [0.9, 1, 1.1], axes: [1, 1, 1]}},"
          " {kleinian_fold: {min_r2: 0.4}}, {spherical_invert: {radius: 1.2, centre: [0.1, 0, 0], from: 1, until: 2}}, {scale: -1.8}, add_c]}",
@@ -119,6 +112,20 @@ std::vector<Group> groups() {
          "formula: {iterations: 10, de: jacobian, iterate: [{polyfold: {order: 5, until: 2}}, icosa_fold, {surf_fold: {limit: [0.9, 1, 1.1], axes: [1, 1, 1]}},"
          " {kleinian_fold: {min_r2: 0.4}}, {spherical_invert: {radius: 1.2, centre: [0.1, 0, 0], from: 1, until: 2}}, {scale: -1.8}, add_c]}",
          2.2}},
+       6.0},
+      // The ABox and Amazing Surf variants; the Menger variants and the Koch IFS.
+      {"formula_presets_box",
+       {{"preset_abox_mod11", "abox_mod11: {scale: -1.5, iterations: 10}", 2.2},
+        {"preset_amazing_surf_mod2", "amazing_surf_mod2: {scale: 1.8, rotation_axis: [1, 1, 0], rotation_angle: 30, iterations: 10}", 2.2},
+        {"preset_amazing_surf_mod4", "amazing_surf_mod4: {scale: 1.8, min_r2: 0.3, rotation_axis: [1, 1, 0], rotation_angle: 30, iterations: 10}", 2.2},
+        {"preset_abox_mod15", "abox_mod15: {scale: -1.5, offset: [0.1, 0, 0], iterations: 10}", 2.2}},
+       6.0},
+      {"formula_presets_menger",
+       {{"preset_menger_mod1", "menger_mod1: {multiplier: [1, 0.85, 1], offset: [0.15, 0, 0], iterations: 8}", 2.2},
+        {"preset_menger_cross_kifs", "menger_cross_kifs: {iterations: 8}", 3.0},
+        {"preset_menger3", "menger3: {iterations: 8}", 2.2},
+        {"preset_koch", "koch: {iterations: 8}", 2.0},
+        {"preset_menger_smooth", "menger_smooth: {iterations: 6}", 2.2}},
        6.0},
   };
 }
@@ -148,7 +155,9 @@ std::vector<V3> member_points(const ir::Module& m, const V3& centre, double radi
   int rays = 0;
   for (int attempt = 0; attempt < 60 && rays < 8; ++attempt) {
     auto [o, rd] = test::random_ray(rng, centre, 1.8 * radius, 0.2 * radius);
-    auto t = test::trace_to_surface([&](const V3& x) { return reference::distance(m, x); }, o, rd, 1e-6, 4 * radius);
+    // The linear estimate r/|dr| of an IFS chain stays above about r/scale^iterations on its surface, so a ray
+    // stops at a fraction of the radius, as a render's hit epsilon does.
+    auto t = test::trace_to_surface([&](const V3& x) { return reference::distance(m, x); }, o, rd, 5e-4 * radius, 4 * radius);
     if (!t) continue;
     ++rays;
     for (int k = -60; k <= 60; ++k) pts.push_back(add(o, mul(rd, *t + k * 2e-4 * radius)));
