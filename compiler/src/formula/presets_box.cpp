@@ -60,34 +60,30 @@ void amazing_surf_mod2(const PresetArgs& a, ChainBuilder& b) {
   b.add("add_c");
 }
 
-// AmazingSurfMod4Iteration: the tglad fold on x and y, an offset, then
-// z * scale / clamp(r^2, min_r2, 1) (the sphere fold with fixed radius 1 and
-// the scale), a second offset, the rotation; + c. Left out (off by default):
-// the sphere inversion, scale vary, the first rotation and the swapped c.
-void amazing_surf_mod4(const PresetArgs& a, ChainBuilder& b) {
-  surf_fold(a, b, 0);
+// The chain AmazingSurfMod4 and AboxMod15 share: the fold, an offset, the
+// sphere fold, the scale, a second offset, the rotation; + c.
+void offset_fold_chain(const PresetArgs& a, ChainBuilder& b, double fold_z, double max_r2) {
+  surf_fold(a, b, fold_z);
   translate(a, b, "offset");
-  sphere_fold(b, a.n("min_r2"), 1);
+  sphere_fold(b, a.n("min_r2"), max_r2);
   b.add("scale", {a.n("scale")});
   translate(a, b, "post_offset");
   rotate(a, b);
   b.add("add_c");
 }
 
+// AmazingSurfMod4Iteration: the tglad fold on x and y, an offset, then
+// z * scale / clamp(r^2, min_r2, 1) (the sphere fold with fixed radius 1 and
+// the scale), a second offset, the rotation; + c. Left out (off by default):
+// the sphere inversion, scale vary, the first rotation and the swapped c.
+void amazing_surf_mod4(const PresetArgs& a, ChainBuilder& b) { offset_fold_chain(a, b, 0, 1); }
+
 // AboxMod15Iteration (the form with minR2p25 and maxR2d1): the tglad fold
 // (z too), an offset, the sphere fold, the scale, a second offset, the
 // rotation; + c. Left out (off by default): the abs and axis order before
 // the fold, the sphere inversion, the first rotation, the in-formula c, the
 // diagonal fold (functionEnabledN) and scale vary.
-void abox_mod15(const PresetArgs& a, ChainBuilder& b) {
-  surf_fold(a, b, a.n("fold_z"));
-  translate(a, b, "offset");
-  sphere_fold(b, a.n("min_r2"), a.n("max_r2"));
-  b.add("scale", {a.n("scale")});
-  translate(a, b, "post_offset");
-  rotate(a, b);
-  b.add("add_c");
-}
+void abox_mod15(const PresetArgs& a, ChainBuilder& b) { offset_fold_chain(a, b, a.n("fold_z"), a.n("max_r2")); }
 
 const PresetParam kScale{"scale", 1, {2}, -1e3, 1e3, "the scale (mandelbox scale)"};
 const PresetParam kFold{"fold", 3, {1, 1, 1}, 1e-6, 100, "the tglad fold's limits (additionConstant111)"};
