@@ -53,6 +53,21 @@ TEST(FractImport, MandelboxWithItsParametersAndSources) {
   expect_builds(im);
 }
 
+TEST(FractImport, PresetFormulasWithTheirParametersAndSources) {
+  Imported x = imported(fract("2.20", "formula_1 11;\nN 9;\n", "power 7;\n"));
+  EXPECT_TRUE(has(x.yaml, "  xenodreambuie:")) << x.yaml;
+  EXPECT_TRUE(has(x.yaml, "power: 7 ")) << x.yaml;
+  EXPECT_TRUE(has(x.yaml, "# [fractal_1] power"));
+  EXPECT_TRUE(has(x.yaml, "iterations: 9"));
+  expect_builds(x);
+  Imported m = imported(fract("2.20", "formula_1 61;\n", "transf_constant_multiplier_111 1 0,85 0,9;\n"));
+  EXPECT_TRUE(has(m.yaml, "  menger_mod1:")) << m.yaml;
+  EXPECT_TRUE(has(m.yaml, "multiplier: [1, 0.85, 0.9]")) << m.yaml;
+  EXPECT_TRUE(has(m.yaml, "scale: 3 "));  // Mandelbulber's default
+  EXPECT_TRUE(has(m.yaml, "iterations: 12"));  // N 250, the preset's cap
+  expect_builds(m);
+}
+
 TEST(FractImport, MengerSpongeAndQuaternionJulia) {
   Imported m = imported(fract("2.20", "formula_1 7;\nN 8;\n"));
   EXPECT_TRUE(has(m.yaml, "  menger:"));
@@ -73,6 +88,13 @@ TEST(FractImport, UnsupportedFormulasAreErrorsNamingThemAndTheirIds) {
                 .find("formula 'Mandelbox' (id 8) with mandelbox_folding_value"),
             std::string::npos);
   EXPECT_NE(error_of(fract("2.20", "formula_1 7;\nfractal_rotation 0 0 10;\n")).find("rotating the fractal"), std::string::npos);
+  // The presets' writers refuse the options their presets leave out.
+  EXPECT_NE(error_of(fract("2.20", "formula_1 11;\n", "alpha_angle_offset 10;\n"))
+                .find("formula 'Xenodreambuie' (id 11) with alpha_angle_offset = 10"),
+            std::string::npos);
+  EXPECT_NE(error_of(fract("2.20", "formula_1 61;\n", "transf_rotation_enabled true;\n"))
+                .find("formula 'Menger - Mod 1' (id 61) with transf_rotation_enabled = true"),
+            std::string::npos);
   EXPECT_NE(error_of(fract("2.20", "formula_1 7;\nhybrid_fractal_enable true;\nformula_2 1003;\n")).find("formula 'transf_scale' (id 1003)"),
             std::string::npos);
 }

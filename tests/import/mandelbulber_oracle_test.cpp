@@ -158,5 +158,25 @@ TEST_F(MandelbulberOracle, ChainFormulaSilhouettesAgree) {
   std::printf("hybrid: masks agree on %.2f %% of the pixels (the Mandelbox alone: %.2f %%)\n", 100 * a, 100 * box_alone);
 }
 
+// The formulas imported as presets: Xenodreambuie (id 11) and Menger - Mod 1
+// (id 61), at their defaults and with other values (a julia constant and
+// power 5; multipliers that take the chain off the plain Menger fold, and an offset).
+TEST_F(MandelbulberOracle, PresetFormulaSilhouettesAgree) {
+  auto file = [&](const char* name, const std::string& main, const std::string& fractal) {
+    return dir.write(name, "# Mandelbulber settings file\n# version 2.20\n# only modified parameters\n[main_parameters]\n" +
+                               main + "fov 0,5;\n[fractal_1]\n" + fractal);
+  };
+  for (const std::string& f :
+       {file("xeno.fract", "formula_1 11;\nN 10;\n", ""),
+        file("xeno_julia.fract", "formula_1 11;\nN 10;\njulia_mode true;\njulia_c 0,3 -0,4 0,2;\n", "power 5;\n"),
+        file("menger_mod1.fract", "formula_1 61;\nN 12;\n", ""),
+        file("menger_mod1_shifted.fract", "formula_1 61;\nN 12;\n",
+             "transf_constant_multiplier_111 1 0,85 0,9;\ntransf_addition_constant 0,15 0 0;\n")}) {
+    double a = agreement(mandelbulber_mask(f, dir), sdfc_mask(f, "", dir));
+    EXPECT_GE(a, 0.97) << f;
+    std::printf("%s: masks agree on %.2f %% of the pixels\n", f.c_str(), 100 * a);
+  }
+}
+
 }  // namespace
 }  // namespace sdfc::fract

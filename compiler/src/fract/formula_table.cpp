@@ -97,6 +97,8 @@ constexpr Formula kMapped[] = {
     {7, "Menger sponge", 10, menger_sponge, menger_chain, true},
     {8, "Mandelbox", 100, mandelbox, mandelbox_chain, true},
     {10, "Kaleidoscopic IFS", 10, ifs, ifs_chain, true},  // its writer mirrors its vectors and rotations
+    {11, "Xenodreambuie", 10, xenodreambuie, nullptr, true},
+    {61, "Menger - Mod 1", 10, menger_mod1, nullptr, true},
 };
 
 }  // namespace

@@ -33,5 +33,7 @@ ChainPart ifs_chain(const FormulaInput& in);                // id 10
 Node mandelbulb(const FormulaInput& in);
 Node mandelbulb_power2(const FormulaInput& in);
 Node ifs(const FormulaInput& in);
+Node xenodreambuie(const FormulaInput& in);  // id 11, formula_presets.cpp
+Node menger_mod1(const FormulaInput& in);    // id 61
 
 }  // namespace sdfc::fract

@@ -70,6 +70,8 @@ constexpr Row kFractal[] = {
     {"IFS_edge", "0 0 0"}, {"IFS_edge_enabled", "0"}, {"IFS_enabled_#", "0"}, {"IFS_intensity_#", "1"},
     {"IFS_menger_sponge_mode", "0"}, {"IFS_offset", "1 0 0"}, {"IFS_rotation", "0 0 0"}, {"IFS_rotation_enabled", "0"},
     {"IFS_rotations_#", "0 0 0"}, {"IFS_scale", "2"}, {"mandelbox_rotation_main", "0 0 0"},
+    {"transf_constant_multiplier_111", "1 1 1"}, {"transf_addition_constant", "0 0 0"}, {"transf_rotation_enabled", "0"},
+    {"transf_function_enabledx_false", "0"}, {"transf_function_enabled_false", "0"},
 };
 
 template <size_t N>

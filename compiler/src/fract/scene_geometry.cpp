@@ -60,7 +60,7 @@ auto with_input(const Slot& s, const File& file, const Params& main, ImportConte
   if (!f || !f->write || (hybrid && !f->chain))
     fail(s.loc, formula_label(s.id) + " is not supported yet" + (hybrid ? " (in a hybrid)" : ""),
          "sdfc imports the Mandelbulb (2), Mandelbulb - Power 2 (3), the Mandelbox (8), the Menger sponge (7), the "
-         "Kaleidoscopic IFS (10) and the quaternion in julia mode (5)");
+         "Kaleidoscopic IFS (10), Xenodreambuie (11), Menger - Mod 1 (61) and the quaternion in julia mode (5)");
   if (w.mirror_y && !f->mirror_symmetric)
     fail(main.loc("legacy_coordinate_system"), formula_label(s.id) + " in the legacy coordinate system is not supported yet");
   Params fractal(file.fractal[size_t(s.n - 1)], true);
