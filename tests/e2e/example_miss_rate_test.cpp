@@ -72,7 +72,7 @@ std::vector<std::string> fractal_examples() {
   // in the CPU reference for this test's time; its image is held to
   // bulb2's instead, tests/e2e/formula_image_test.cpp)
   // The presets' examples too (but not those made of expr steps:
-  // mandelbulb_power_2, box_fold_bulb_pow2, menger_smooth).
+  // mandelbulb_power_2, box_fold_bulb_pow2, eiffie_msltoe, menger_smooth).
   for (const char* f : {"mandelbox_chain", "mandelbulb_chain", "mandelbulb_jacobian", "bulb2", "preset_mandelbox",
                         "preset_mandelbulb", "menger_sponge", "sierpinski_preset", "kaleidoscopic_ifs", "pseudo_kleinian",
                         "amazing_surf", "icosa_ifs", "xenodreambuie", "koch", "abox_mod11", "amazing_surf_mod2",

@@ -3,6 +3,8 @@
 // refuses the options the preset leaves out (each off by default).
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include "formula_writers.hpp"
 
 namespace sdfc::fract {
@@ -46,7 +48,7 @@ Node menger_mod1(const FormulaInput& in) {
   require_off(in, "transf_function_enabledx_false");  // the box offset
   require_off(in, "transf_function_enabled_false");   // the iteration weight
   double scale = in.fractal.number("transf_scale_3");
-  if (!(scale > 1 && scale <= 100)) unsupported_setting(in, "transf_scale_3", num(scale));
+  if (!(std::fabs(scale) <= 100)) unsupported_setting(in, "transf_scale_3", num(scale));  // the preset's range
   return preset_node(in, "menger_mod1",
                      {{"scale", num(scale), from(in, "transf_scale_3")},
                       {"multiplier", vec(in.fractal.vec3("transf_constant_multiplier_111")),
