@@ -12,6 +12,7 @@
 #include "commands.hpp"
 #include "sdfc/codegen/camera_view.hpp"
 #include "sdfc/compile.hpp"
+#include "sdfc/formula/chain.hpp"
 #include "sdfc/ir/printer.hpp"
 #include "sdfc/kinds/params.hpp"
 #include "sdfc/kinds/registry.hpp"
@@ -75,6 +76,12 @@ int run_check(const SceneArgs& args) {
     fmt::print("  {:<20} {:<9} L = {:<6.4g} {}{}\n", ir::info(n.kind).name, ir::to_string(n.props.cls), n.props.lipschitz,
                at, note);
     if (const kinds::Description* d = kinds::find(n.kind); d && d->explain) fmt::print("{}", d->explain(n));
+    if (auto k = formula::builtin_chain_at(n.loc)) {
+      const formula::Chain& c = formula::chain(*k);
+      fmt::print("preset {} renders with the built-in {}'s own code (the same fractal; a setting only a chain has,\n"
+                 "such as de, makes it the chain). The chain it stands for:\n{}",
+                 c.preset, ir::info(n.kind).name, formula::describe(c));
+    }
   }
   if (steep > 0)
     fmt::print("  Lipschitz correction: {} of {} nodes with L > 1 divided locally\n", corrected, steep);

@@ -2,7 +2,8 @@
 // repeats and windows, and the chain's double reference against the
 // built-in fractals it spells out (written independently in reference/).
 // Presets: a preset's own node is the formula naming it, the built-ins'
-// presets are the built-in kinds' fields, `sdfc check`'s account names them.
+// presets are the built-in kinds' fields and render with the kinds' code
+// where the kind draws them, `sdfc check`'s account names them.
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>
@@ -13,7 +14,9 @@
 
 #include "scene_text.hpp"
 #include "sdfc/formula/chain.hpp"
+#include "sdfc/formula/evaluate.hpp"
 #include "sdfc/formula/preset.hpp"
+#include "sdfc/ir/printer.hpp"
 #include "sdfc/passes/passes.hpp"
 #include "sdfc/reference/evaluator.hpp"
 
@@ -28,7 +31,21 @@ const ir::Node& formula_node(const ir::Module& m) {
   throw std::runtime_error("no formula node");
 }
 
-size_t index_of(const ir::Module& m) { return size_t(formula_node(m).params[0]); }
+// The chain a module's fractal stands for: the formula node's, or the one a
+// preset drawn by its built-in kind's code noted at the kind's node.
+size_t index_of(const ir::Module& m) {
+  for (ir::NodeId k : m.graph->postorder(m.root)) {
+    const ir::Node& n = m.graph->node(k);
+    if (n.kind == ir::Kind::Formula) return size_t(n.params[0]);
+    if (auto c = formula::builtin_chain_at(n.loc)) return *c;
+  }
+  throw std::runtime_error("no formula node");
+}
+bool has_kind(const ir::Module& m, ir::Kind kind) {
+  for (ir::NodeId k : m.graph->postorder(m.root))
+    if (m.graph->node(k).kind == kind) return true;
+  return false;
+}
 const formula::Chain& chain_of(const ir::Module& m) { return formula::chain(index_of(m)); }
 
 formula::Plan plan_of(const std::string& node) { return formula::plan(chain_of(module_of(node))); }
@@ -78,15 +95,20 @@ TEST(FormulaChain, RepeatsUnrollAndRepeatFromCountsEntries) {
   EXPECT_EQ(c.steps[4].until, 4);
 }
 
-// The chain's reference against the built-in kind's, point by point.
+// The chain's reference against the built-in kind's, point by point. A
+// preset the kind draws renders as the kind: its chain is compared.
 void expect_same_field(const std::string& chain, const std::string& builtin, double radius, double tol) {
-  ir::Module a = module_of(chain), b = module_of(builtin);
+  ir::Module a = module_of(chain);
+  const bool drawn_by_kind = !has_kind(a, ir::Kind::Formula);
+  const formula::Chain& c = formula::chain(index_of(a));
+  ir::Module b = module_of(builtin);
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> u(-radius, radius);
   int compared = 0;
   for (int i = 0; i < 4000; ++i) {
     reference::Vec3 p{u(rng), u(rng), u(rng)};
-    double da = reference::distance(a, p), db = reference::distance(b, p);
+    double da = drawn_by_kind ? formula::evaluate(c, p).distance : reference::distance(a, p);
+    double db = reference::distance(b, p);
     if (std::fabs(db) > 0.5 * radius) continue;  // far field: the two bound differently there
     ++compared;
     ASSERT_NEAR(da, db, tol * std::max(1.0, std::fabs(db))) << chain << " at " << p[0] << ", " << p[1] << ", " << p[2];
@@ -134,6 +156,30 @@ TEST(FormulaPreset, MandelbulbPresetIsTheMandelbulb) {
   // inside the cube of 0.9 (|p| < 1.56): the built-in's far-field bound
   // starts at 1.5 times its set radius (1.66), the chain's at twice the bailout
   expect_same_field("{formula: {preset: mandelbulb, power: 8}}", "{mandelbulb: {power: 8}, step_factor: 1}", 0.9, 1e-6);
+}
+
+// The kind draws the preset when it can: the same node as the kind written
+// out; a setting only a chain has, or a value outside the kind's ranges,
+// keeps the chain.
+TEST(FormulaPreset, ABuiltInsPresetRendersAsTheKindWhereTheKindDrawsIt) {
+  auto same_module = [](const std::string& a, const std::string& b) {
+    return ir::print(module_of(a)) == ir::print(module_of(b));
+  };
+  EXPECT_TRUE(same_module("{formula: {preset: mandelbox, scale: -1.5, iterations: 12}}",
+                          "{mandelbox: {scale: -1.5, iterations: 12}}"));
+  EXPECT_TRUE(same_module("{formula: {preset: mandelbulb, power: 7, julia: [0.3, 0.1, -0.2]}}",
+                          "{mandelbulb: {power: 7, julia: [0.3, 0.1, -0.2]}}"));
+  EXPECT_TRUE(same_module("{menger_sponge: {iterations: 6}}", "{menger: {scale: 3, iterations: 6}}"));
+  EXPECT_TRUE(same_module("{formula: {preset: sierpinski, scale: 2.5}}", "{sierpinski: {scale: 2.5, iterations: 16}}"));
+  EXPECT_TRUE(same_module("{kaleidoscopic_ifs: {iterations: 9}}",
+                          "{kifs: {symmetry: octahedral, scale: 3, offset: [1, 1, 1], iterations: 9}}"));
+  for (const char* chain : {"{formula: {preset: mandelbox, de: jacobian}}", "{formula: {preset: mandelbox, bailout: 50}}",
+                            "{formula: {preset: mandelbox, iterations: 300}}", "{menger_sponge: {offset: [1, 1, 0.5]}}",
+                            "{menger_sponge: {scale: 5}}", "{kaleidoscopic_ifs: {rotation_angle: 20}}",
+                            "{formula: {preset: mandelbulb, de: linear}}", "{formula: {preset: sierpinski, iterations: 40}}"}) {
+    SCOPED_TRACE(chain);
+    EXPECT_TRUE(has_kind(module_of(chain), ir::Kind::Formula));
+  }
 }
 
 TEST(FormulaPreset, ANodeOfItsOwnIsTheFormulaNamingIt) {

@@ -4,6 +4,7 @@
 #include <deque>
 #include <map>
 #include <mutex>
+#include <tuple>
 
 #include "sdfc/formula/step.hpp"
 
@@ -81,6 +82,7 @@ struct Table {
   std::mutex lock;
   std::deque<Chain> chains;
   std::map<std::string, size_t> by_text;
+  std::map<std::tuple<std::string, int, int>, size_t> builtin_at;  // source location -> chain
 };
 Table& table() {
   static Table t;
@@ -106,6 +108,24 @@ const Chain& chain(size_t index) {
   Table& t = table();
   std::lock_guard<std::mutex> g(t.lock);
   return t.chains.at(index);
+}
+
+namespace {
+std::tuple<std::string, int, int> place(const SourceLoc& at) { return {at.file ? *at.file : "", at.line, at.column}; }
+}  // namespace
+
+void note_builtin(const SourceLoc& at, size_t chain_index) {
+  Table& t = table();
+  std::lock_guard<std::mutex> g(t.lock);
+  t.builtin_at[place(at)] = chain_index;
+}
+
+std::optional<size_t> builtin_chain_at(const SourceLoc& at) {
+  Table& t = table();
+  std::lock_guard<std::mutex> g(t.lock);
+  auto it = t.builtin_at.find(place(at));
+  if (it == t.builtin_at.end()) return std::nullopt;
+  return it->second;
 }
 
 }  // namespace sdfc::formula

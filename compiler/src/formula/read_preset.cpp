@@ -77,8 +77,10 @@ std::optional<Chain> read_preset(frontend::ValueReader& r, const Preset& p, cons
   Chain c;
   c.preset = std::string(p.name);
   ChainBuilder b(c, key.loc);
-  p.build(PresetArgs(p.params, std::move(values)), b);  // may set de and kleinian_size
+  const PresetArgs args(p.params, std::move(values));
+  p.build(args, b);  // may set de and kleinian_size
   read_settings(m, c, p.iterations, p.bailout);
+  if (p.as_builtin) c.builtin = p.as_builtin(args, c);
   if (!clean || !r.sink().empty()) return std::nullopt;
   return c;
 }

@@ -2,12 +2,15 @@
 // the node holds the chain's index in the chain table.
 #include <fmt/format.h>
 
+#include <stdexcept>
+
 #include "../codegen/trap_shape_emitter.hpp"
 #include "fractal.hpp"
 #include "sdfc/formula/emit.hpp"
 #include "sdfc/formula/evaluate.hpp"
 #include "sdfc/formula/preset.hpp"
 #include "sdfc/formula/read_chain.hpp"
+#include "sdfc/kinds/registry.hpp"
 #include "sdfc/reference/evaluator.hpp"
 
 SDFC_KIND(Formula, 55, "formula", Fractal, 0, "chain,iterations,bailout", "")
@@ -19,12 +22,49 @@ struct FormulaP {
   double chain, iterations, bailout;
 };
 
+// A preset the built-in kind draws exactly: the kind's node, lowered by the
+// kind from a body written here; the chain it stands for is kept for `sdfc check`.
+ir::NodeId lower_as_builtin(Lowering& l, formula::Chain c) {
+  const formula::KindNode k = *c.builtin;
+  const Description* d = kinds::find(std::string_view(k.kind));
+  if (!d) throw std::logic_error("preset " + c.preset + ": no kind " + k.kind);
+  auto scalar = [&](std::string text) {
+    SourceValue v;
+    v.kind = SourceValue::Kind::Scalar;
+    v.loc = l.at();
+    v.scalar = std::move(text);
+    return v;
+  };
+  SourceValue body;
+  body.kind = SourceValue::Kind::Map;
+  body.loc = l.at();
+  for (const formula::KindValue& kv : k.values) {
+    SourceValue value = scalar(kv.word);
+    if (kv.word.empty() && kv.numbers.size() == 1) value = scalar(fmt::format("{}", kv.numbers[0]));
+    if (kv.word.empty() && kv.numbers.size() > 1) {
+      value = SourceValue();
+      value.kind = SourceValue::Kind::Sequence;
+      value.loc = l.at();
+      for (double x : kv.numbers) value.items.push_back(scalar(fmt::format("{}", x)));
+    }
+    body.entries.emplace_back(scalar(kv.key), std::move(value));
+  }
+  SourceValue key = l.key();
+  key.scalar = k.kind;
+  Lowering as_kind(*d, l.reader(), l.builder(), key, body);
+  const ir::NodeId id = d->lower(as_kind);
+  c.builtin.reset();
+  formula::note_builtin(l.at(), formula::intern(std::move(c)));
+  return id;
+}
+
 ir::NodeId lower(Lowering& l) {
   // `formula: {...}`, or a preset's own node (`pseudo_kleinian: {...}`)
   const formula::Preset* preset = formula::find_preset(l.key().scalar);
   std::optional<formula::Chain> c = preset ? formula::read_preset(l.reader(), *preset, l.body(), l.key())
                                            : formula::read_chain(l.reader(), l.body());
   if (!c) return ir::kNoNode;
+  if (c->builtin) return lower_as_builtin(l, std::move(*c));
   FormulaP p{double(c->iterations), double(c->iterations), c->bailout};
   p.chain = double(formula::intern(std::move(*c)));
   return l.make(p);

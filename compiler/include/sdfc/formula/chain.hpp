@@ -5,6 +5,7 @@
 // (emit_chain.cpp) and evaluates it in double for the tests (evaluate_chain.cpp).
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,18 @@ struct Step {
 // max(rxy - kleinian_size, |rxy z.z| / r) / |dr| for chains that never escape.
 enum class DeChoice { Auto, Linear, Log, Jacobian, Kleinian };
 
+// A built-in kind's node, as a scene would write it: a preset whose values
+// the kind draws exactly renders with the kind's own hand-written code.
+struct KindValue {
+  std::string key;
+  std::vector<double> numbers;  // one, or three for a vec3
+  std::string word = {};        // a word instead (`de: jacobian`)
+};
+struct KindNode {
+  std::string kind;  // the key scenes write (`mandelbox`)
+  std::vector<KindValue> values;
+};
+
 struct Chain {
   std::vector<Step> steps;  // repeats already unrolled
   int iterations = 12;
@@ -46,6 +59,7 @@ struct Chain {
   int repeat_from = 0;  // iterations after the first start at this step
   double kleinian_size = 1;  // de: kleinian's cylinder radius
   std::string preset;        // the preset it was expanded from, if any
+  std::optional<KindNode> builtin;  // set: the preset renders as this built-in node
 };
 
 // The estimator the compiler chose and why (`sdfc check` prints it).
@@ -64,5 +78,10 @@ std::string describe(const Chain& c);
 // chains get one index. Thread-safe; entries are never removed.
 size_t intern(Chain c);
 const Chain& chain(size_t index);
+
+// Presets drawn by a built-in kind's code: the chain each stands for, by the
+// source location of its node, so `sdfc check` can print it.
+void note_builtin(const SourceLoc& at, size_t chain_index);
+std::optional<size_t> builtin_chain_at(const SourceLoc& at);
 
 }  // namespace sdfc::formula

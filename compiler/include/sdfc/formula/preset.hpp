@@ -5,6 +5,7 @@
 // `build` turns the parameters into the chain's steps; `sdfc check` prints
 // the chain it expands to.
 #include <array>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -59,6 +60,10 @@ struct Preset {
   double bailout;
   void (*build)(const PresetArgs&, ChainBuilder&);
   std::string_view builtin = {};  // the hand-wired kind it spells out, if any
+  // The built-in kind's node when the kind draws exactly these values (its
+  // ranges hold and no setting only a chain has is given); the preset then
+  // renders with the kind's own code. Empty: the chain.
+  std::optional<KindNode> (*as_builtin)(const PresetArgs&, const Chain&) = nullptr;
 };
 
 const std::vector<const Preset*>& presets();  // every preset, by name
