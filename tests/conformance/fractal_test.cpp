@@ -127,6 +127,12 @@ std::vector<Group> groups() {
         {"preset_koch", "koch: {iterations: 8}", 2.0},
         {"preset_menger_smooth", "menger_smooth: {iterations: 6}", 2.2}},
        6.0},
+      // Jos Leys' Kleinian: wrap, the flip above the sine line, the inversion, its own estimate.
+      {"formula_presets_jos_kleinian",
+       {{"preset_jos_kleinian", "jos_kleinian: {iterations: 8, bailout: 2.5}", 1.2},
+        {"preset_jos_kleinian_shifted",
+         "jos_kleinian: {height: 1.9, shift: 0.073, box_size: [0.9, 1.1, 1.2], spheres: 0, de_cap: 0.28, iterations: 8, bailout: 2.5}", 1.2}},
+       6.0},
   };
 }
 

@@ -76,11 +76,17 @@ std::string emit_chain(const Chain& c, const std::string& p, const codegen::deta
       if (pl.kleinian)
         w.line(fmt::format("{{ real rxy = sqrt(z.x * z.x + z.y * z.y); {} = fmax(rxy - {}, fabs(rxy * z.z) / fmax(r, K(1e-20f))) / dd; }}",
                            out, lit.real(c.kleinian_size)));
+      else if (pl.jos_kleinian)
+        w.line(fmt::format("{{ real y = {}; {} = fmin(y, {}) / fmax(dd, {}); }}",
+                           c.jos_height > 0 ? fmt::format("fmin(z.y, {} - z.y)", lit.real(c.jos_height)) : "z.y", out,
+                           lit.real(c.jos_cap), lit.real(c.jos_min_dr)));
       else
         w.line(fmt::format("{} = {};", out, pl.log ? "0.5f * log(fmax(r, K(1e-20f))) * r / dd" : "r / dd"));
       w.line("// far field: the set lies inside the bailout ball, so beyond twice its radius the distance to");
       w.line("// the ball is a true bound");
       w.line(fmt::format("real r0 = v3_length({});", p));
+      // jos_kleinian's set fills space: the chain keeps the part inside the bailout ball
+      if (pl.jos_kleinian) w.line(fmt::format("{0} = fmax({0}, r0 - {1});", out, bail));
       w.line(fmt::format("{0} = SEL({0}, r0 - {1}, r0 > {2});", out, bail, lit.real(2 * c.bailout)));
       break;
     }

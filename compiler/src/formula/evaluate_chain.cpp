@@ -42,7 +42,12 @@ OrbitResult evaluate(const Chain& c, const std::array<double, 3>& p,
     double rxy = std::sqrt(s.z[0] * s.z[0] + s.z[1] * s.z[1]);
     d = std::max(rxy - c.kleinian_size, std::fabs(rxy * s.z[2]) / std::max(r, 1e-20)) / norm;
   }
+  if (pl.jos_kleinian) {
+    const double y = c.jos_height > 0 ? std::min(s.z[1], c.jos_height - s.z[1]) : s.z[1];
+    d = std::min(y, c.jos_cap) / std::max(norm, c.jos_min_dr);
+  }
   double r0 = length(p);
+  if (pl.jos_kleinian) d = std::max(d, r0 - c.bailout);
   if (r0 > 2 * c.bailout) d = r0 - c.bailout;
   return {d, trap, n, r};
 }

@@ -33,6 +33,10 @@ Plan plan(const Chain& c) {
   if (c.de == DeChoice::Kleinian) {
     p.kleinian = true;
     form = fmt::format("max(rxy - {}, |rxy z.z| / r) / |dr| (de: kleinian)", c.kleinian_size);
+  } else if (c.de == DeChoice::JosKleinian) {
+    p.jos_kleinian = true;
+    form = fmt::format("min({}, {}) / max(|dr|, {}) (de: jos_kleinian), cut to the bailout ball",
+                       c.jos_height > 0 ? fmt::format("min(z.y, {} - z.y)", c.jos_height) : "z.y", c.jos_cap, c.jos_min_dr);
   } else if (c.de == DeChoice::Linear || c.de == DeChoice::Log) {
     p.log = c.de == DeChoice::Log;
     form = p.log ? "0.5 log(r) r / |dr| (de: log)" : "r / |dr| (de: linear)";
@@ -96,6 +100,7 @@ size_t intern(Chain c) {
   for (const Step& s : c.steps)
     for (double v : s.a) key += fmt::format(" {:a}", v);
   key += fmt::format(" {:a} {} {} {:a}", c.bailout, int(c.de), c.repeat_from, c.kleinian_size);
+  if (c.de == DeChoice::JosKleinian) key += fmt::format(" {:a} {:a} {:a}", c.jos_cap, c.jos_min_dr, c.jos_height);
   Table& t = table();
   std::lock_guard<std::mutex> g(t.lock);
   auto it = t.by_text.find(key);

@@ -192,12 +192,13 @@ void read_settings(frontend::MapReader& m, Chain& c, int iterations, double bail
     c.c = m.vec3("julia", {0, 0, 0});
   }
   // A preset's own choice is the default (the words in DeChoice's order).
-  static const char* const kWords[] = {"auto", "linear", "log", "jacobian", "kleinian"};
-  std::string de = m.word("de", kWords[int(c.de)], {"auto", "linear", "log", "jacobian", "kleinian"});
+  static const char* const kWords[] = {"auto", "linear", "log", "jacobian", "kleinian", "jos_kleinian"};
+  std::string de = m.word("de", kWords[int(c.de)], {"auto", "linear", "log", "jacobian", "kleinian", "jos_kleinian"});
   c.de = de == "linear"     ? DeChoice::Linear
          : de == "log"      ? DeChoice::Log
          : de == "jacobian" ? DeChoice::Jacobian
          : de == "kleinian" ? DeChoice::Kleinian
+         : de == "jos_kleinian" ? DeChoice::JosKleinian
                             : DeChoice::Auto;
   c.kleinian_size = m.number("kleinian_size", c.kleinian_size, Range::closed(1e-6, 1e6));
 }

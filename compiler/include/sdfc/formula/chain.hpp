@@ -35,7 +35,10 @@ struct Step {
 // `de:` as written: auto picks from the chain.
 // Kleinian: Mandelbulber's pseudo-Kleinian estimate
 // max(rxy - kleinian_size, |rxy z.z| / r) / |dr| for chains that never escape.
-enum class DeChoice { Auto, Linear, Log, Jacobian, Kleinian };
+// JosKleinian: Mandelbulber's Jos Leys Kleinian estimate
+// min(y, jos_cap) / max(|dr|, jos_min_dr), y first folded to min(y, jos_height - y)
+// when jos_height > 0 (its spheres).
+enum class DeChoice { Auto, Linear, Log, Jacobian, Kleinian, JosKleinian };
 
 // A built-in kind's node, as a scene would write it: a preset whose values
 // the kind draws exactly renders with the kind's own hand-written code.
@@ -58,6 +61,7 @@ struct Chain {
   DeChoice de = DeChoice::Auto;
   int repeat_from = 0;  // iterations after the first start at this step
   double kleinian_size = 1;  // de: kleinian's cylinder radius
+  double jos_cap = 0.05, jos_min_dr = 1, jos_height = 0;  // de: jos_kleinian's numbers
   std::string preset;        // the preset it was expanded from, if any
   std::optional<KindNode> builtin;  // set: the preset renders as this built-in node
 };
@@ -67,6 +71,7 @@ struct Plan {
   bool jacobian = false;  // a running 3x3 Jacobian, else a scalar derivative
   bool log = false;       // 0.5 log(r) r / |dr|, else r / |dr|
   bool kleinian = false;  // the pseudo-Kleinian form (DeChoice::Kleinian)
+  bool jos_kleinian = false;  // the Jos Leys Kleinian form (DeChoice::JosKleinian)
   std::string why;
 };
 Plan plan(const Chain& c);

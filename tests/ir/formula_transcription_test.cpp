@@ -1,0 +1,101 @@
+// Presets against Mandelbulber's own iteration, transcribed here in double
+// from its formula source (Mandelbulber 2.20, formula/opencl/NAME.cl) with
+// its loop (bailout after each iteration) and its distance estimate; the
+// preset's chain is evaluated by the chain's double reference.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <random>
+#include <string>
+
+#include "scene_text.hpp"
+#include "sdfc/formula/chain.hpp"
+#include "sdfc/formula/evaluate.hpp"
+#include "sdfc/passes/passes.hpp"
+
+namespace sdfc {
+namespace {
+
+using V3 = std::array<double, 3>;
+
+const formula::Chain& chain_of(const std::string& node) {
+  static std::vector<ir::Module> kept;  // the chain table outlives the module anyway
+  kept.push_back(passes::run_pipeline(test::lower_text("scene: " + node + "\n")));
+  const ir::Module& m = kept.back();
+  for (ir::NodeId k : m.graph->postorder(m.root))
+    if (m.graph->node(k).kind == ir::Kind::Formula) return formula::chain(size_t(m.graph->node(k).params[0]));
+  throw std::runtime_error("no formula node");
+}
+
+// JosKleinianIteration and the josKleinian analytic estimate.
+struct Jos {
+  double a = 2, b = 0;  // foldingValue, offset
+  V3 box{1, 1, 1};      // offset111
+  bool spheres = true;
+  double tweak = 0.05, min_dr = 1;  // analyticDE tweak005, offset1
+  int n = 12;
+  double bailout = 10;
+
+  double distance(V3 z) const {
+    double de = 1;
+    const double f = b > 0 ? 1 : b < 0 ? -1 : 0;
+    const V3 box1{2 * box[0], a * box[1], 2 * box[2]}, box2{-box[0], -box[1] + 1, -box[2]};
+    for (int i = 0; i < n; ++i) {
+      for (int k = 0; k < 3; ++k) {
+        double x = z[k] - box2[k];
+        z[k] = x - box1[k] * std::floor(x / box1[k]) + box2[k];
+      }
+      if (z[1] >= a * (0.5 + 0.2 * std::sin(f * M_PI * ((b * 0.5 + z[0]) / box[0])))) z = {-b - z[0], a - z[1], 0 - z[2]};
+      double rr = z[0] * z[0] + z[1] * z[1] + z[2] * z[2], ir = 1 / rr;
+      for (double& v : z) v *= -ir;
+      z[0] = -b - z[0];
+      z[1] = a + z[1];
+      de *= std::fabs(ir);
+      if (std::sqrt(z[0] * z[0] + z[1] * z[1] + z[2] * z[2]) > bailout) break;
+    }
+    double y = spheres ? std::min(z[1], a - z[1]) : z[1];
+    return std::min(y, tweak) / std::max(de, min_dr);
+  }
+};
+
+// The share of random points (inside the bailout ball, which cuts the
+// chain's set) where the preset's
+// chain gives Mandelbulber's distance to 1e-9 relative; the rest sit where
+// a fold's seam or the chaotic orbit turns a last-bit difference into
+// another branch.
+template <class Oracle>
+double agreement(const formula::Chain& c, const Oracle& mb, double half) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-half, half);
+  int same = 0, n = 0;
+  for (int i = 0; i < 4000; ++i) {
+    V3 p{u(rng), u(rng), u(rng)};
+    // Mandelbulber sets a negative distance to 0 (inside)
+    double want = std::max(mb.distance(p), 0.0), got = std::max(formula::evaluate(c, p).distance, 0.0);
+    same += std::fabs(got - want) <= 1e-9 * std::max(1.0, std::fabs(want));
+    ++n;
+  }
+  return double(same) / n;
+}
+
+TEST(FormulaTranscription, JosKleinianIsMandelbulbersIterationAndEstimate) {
+  Jos mb;
+  EXPECT_GT(agreement(chain_of("{jos_kleinian: {iterations: 12}}"), mb, 2.5), 0.99);
+  Jos other;
+  other.a = 1.9, other.b = 0.073, other.box = {0.9, 1.1, 1.2}, other.spheres = false, other.tweak = 0.28, other.min_dr = 0.5;
+  other.n = 20, other.bailout = 6;
+  EXPECT_GT(agreement(chain_of("{jos_kleinian: {height: 1.9, shift: 0.073, box_size: [0.9, 1.1, 1.2], spheres: 0, de_cap: 0.28,"
+                               " de_min_dr: 0.5, iterations: 20, bailout: 6}}"),
+                      other, 2.5),
+            0.99);
+  other.b = -0.2;
+  EXPECT_GT(agreement(chain_of("{jos_kleinian: {height: 1.9, shift: -0.2, box_size: [0.9, 1.1, 1.2], spheres: 0, de_cap: 0.28,"
+                               " de_min_dr: 0.5, iterations: 20, bailout: 6}}"),
+                      other, 2.5),
+            0.99);
+}
+
+}  // namespace
+}  // namespace sdfc
