@@ -127,6 +127,17 @@ std::vector<Group> groups() {
         {"preset_koch", "koch: {iterations: 8}", 2.0},
         {"preset_menger_smooth", "menger_smooth: {iterations: 6}", 2.2}},
        6.0},
+      // The 4-D chains: the quaternion Julia preset (slice, cubic and the
+      // Jacobian's w row too), Quaternion, Hypercomplex and Aexion, and a
+      // chain whose julia gives w.
+      {"formula_four_d",
+       {{"preset_julia", "formula: {preset: julia, c: [-0.2, 0.6, 0.2, 0.2]}", 1.6},
+        {"preset_julia_cubic_jacobian", "formula: {preset: julia, c: [-0.4, 0.5, 0.1, 0.1], degree: 3, slice: 0.2, de: jacobian}", 1.6},
+        {"preset_quaternion", "quaternion: {iterations: 8}", 2.2},
+        {"preset_hypercomplex", "hypercomplex: {iterations: 8}", 2.2},
+        {"preset_aexion", "aexion: {iterations: 8}", 1.2},
+        {"chain_hypercomplex_julia_w", "formula: {iterations: 8, bailout: 4, julia: [-0.3, 0.5, 0.1, 0.2], iterate: [hypercomplex, add_c]}", 1.6}},
+       5.0},
   };
 }
 

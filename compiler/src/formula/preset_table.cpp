@@ -9,6 +9,7 @@ extern const Preset kBulbPower2Preset, kPseudoKleinianPreset, kAmazingSurfPreset
 extern const Preset kXenodreambuiePreset, kEiffieMsltoePreset, kKochPreset;
 extern const Preset kAboxMod11Preset, kAmazingSurfMod2Preset, kAmazingSurfMod4Preset, kAboxMod15Preset;
 extern const Preset kMengerMod1Preset, kMengerSmoothPreset, kMenger3Preset, kMengerCrossKifsPreset;
+extern const Preset kJuliaPreset, kQuaternionPreset, kHypercomplexPreset, kAexionPreset;
 
 const std::vector<const Preset*>& presets() {
   static const std::vector<const Preset*> all =
@@ -16,7 +17,8 @@ const std::vector<const Preset*>& presets() {
                               &kBulbPower2Preset, &kPseudoKleinianPreset, &kAmazingSurfPreset, &kBoxFoldBulbPow2Preset,
                               &kXenodreambuiePreset, &kEiffieMsltoePreset, &kKochPreset,
                               &kAboxMod11Preset, &kAmazingSurfMod2Preset, &kAmazingSurfMod4Preset, &kAboxMod15Preset,
-                              &kMengerMod1Preset, &kMengerSmoothPreset, &kMenger3Preset, &kMengerCrossKifsPreset});
+                              &kMengerMod1Preset, &kMengerSmoothPreset, &kMenger3Preset, &kMengerCrossKifsPreset,
+                              &kJuliaPreset, &kQuaternionPreset, &kHypercomplexPreset, &kAexionPreset});
   return all;
 }
 
