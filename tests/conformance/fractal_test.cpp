@@ -135,7 +135,7 @@ std::vector<Group> groups() {
         {"preset_julia_cubic_jacobian", "formula: {preset: julia, c: [-0.4, 0.5, 0.1, 0.1], degree: 3, slice: 0.2, de: jacobian}", 1.6},
         {"preset_quaternion", "quaternion: {iterations: 8}", 2.2},
         {"preset_hypercomplex", "hypercomplex: {iterations: 8}", 2.2},
-        {"preset_aexion", "aexion: {iterations: 8}", 1.2},
+        {"preset_aexion", "aexion: {iterations: 8}", 2.0},
         {"chain_hypercomplex_julia_w", "formula: {iterations: 8, bailout: 4, julia: [-0.3, 0.5, 0.1, 0.2], iterate: [hypercomplex, add_c]}", 1.6}},
        5.0},
   };

@@ -52,6 +52,6 @@ extern const Preset kHypercomplexPreset{
     "hypercomplex", "Mandelbulber's Hypercomplex: the square of a commutative 4-D number, + c", {}, 10, 10, hypercomplex};
 extern const Preset kAexionPreset{
     "aexion", "Aexion's quadray set: z and c made 4-D on the tetrahedron's axes, then the quadray square plus c",
-    {{"cadd", 1, {0}, -100, 100, "added to every component of z and c when they are made 4-D"}}, 10, 10, aexion};
+    {{"cadd", 1, {-1.3}, -100, 100, "added to every component of z and c when they are made 4-D"}}, 10, 10, aexion};
 
 }  // namespace sdfc::formula
