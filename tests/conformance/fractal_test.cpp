@@ -133,6 +133,17 @@ std::vector<Group> groups() {
         {"preset_jos_kleinian_shifted",
          "jos_kleinian: {height: 1.9, shift: 0.073, box_size: [0.9, 1.1, 1.2], spheres: 0, de_cap: 0.28, iterations: 8, bailout: 2.5}", 1.2}},
        6.0},
+      // The 4-D chains: the quaternion Julia preset (slice, cubic and the
+      // Jacobian's w row too), Quaternion, Hypercomplex and Aexion, and a
+      // chain whose julia gives w.
+      {"formula_four_d",
+       {{"preset_julia", "formula: {preset: julia, c: [-0.2, 0.6, 0.2, 0.2]}", 1.6},
+        {"preset_julia_cubic_jacobian", "formula: {preset: julia, c: [-0.4, 0.5, 0.1, 0.1], degree: 3, slice: 0.2, de: jacobian}", 1.6},
+        {"preset_quaternion", "quaternion: {iterations: 8}", 2.2},
+        {"preset_hypercomplex", "hypercomplex: {iterations: 8}", 2.2},
+        {"preset_aexion", "aexion: {iterations: 8}", 2.0},
+        {"chain_hypercomplex_julia_w", "formula: {iterations: 8, bailout: 4, julia: [-0.3, 0.5, 0.1, 0.2], iterate: [hypercomplex, add_c]}", 1.6}},
+       5.0},
   };
 }
 

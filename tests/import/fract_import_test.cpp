@@ -76,12 +76,20 @@ TEST(FractImport, MengerSpongeAndQuaternionJulia) {
   Imported q = imported(fract("2.20", "formula_1 5;\njulia_mode true;\njulia_c 0,5 -0,8 -0,78;\n"));
   EXPECT_TRUE(has(q.yaml, "c: [0.5, -0.8, -0.78, 0]")) << q.yaml;
   expect_builds(q);
-  // Not in julia mode the quaternion has no sdfc kind.
-  EXPECT_NE(error_of(fract("2.20", "formula_1 5;\n")).find("formula 'Quaternion' (id 5) with julia_mode"), std::string::npos);
+  // Not in julia mode the quaternion is the 4-D quaternion preset, as are Hypercomplex and Aexion.
+  Imported qm = imported(fract("2.20", "formula_1 5;\nN 8;\n"));
+  EXPECT_TRUE(has(qm.yaml, "  quaternion:")) << qm.yaml;
+  expect_builds(qm);
+  Imported h = imported(fract("2.20", "formula_1 4;\nN 8;\n"));
+  EXPECT_TRUE(has(h.yaml, "  hypercomplex:")) << h.yaml;
+  expect_builds(h);
+  Imported a = imported(fract("2.20", "formula_1 19;\nN 8;\n", "cadd 0,25;\n"));
+  EXPECT_TRUE(has(a.yaml, "cadd: 0.25")) << a.yaml;
+  expect_builds(a);
 }
 
 TEST(FractImport, UnsupportedFormulasAreErrorsNamingThemAndTheirIds) {
-  EXPECT_EQ(error_of(fract("2.20", "formula_1 4;\n")), "5:11 formula 'Hypercomplex' (id 4) is not supported yet");
+  EXPECT_EQ(error_of(fract("2.20", "formula_1 6;\n")), "5:11 formula 'minusFastTrig' (id 6) is not supported yet");
   EXPECT_EQ(error_of(fract("2.20", "formula_1 99999;\n")), "5:11 formula id 99999 is not supported yet");
   // A mapped formula with a setting that would change its shape.
   EXPECT_NE(error_of(fract("2.20", "formula_1 8;\n", "mandelbox_folding_value 3;\n"))

@@ -158,8 +158,8 @@ TEST_F(MandelbulberOracle, ChainFormulaSilhouettesAgree) {
   std::printf("hybrid: masks agree on %.2f %% of the pixels (the Mandelbox alone: %.2f %%)\n", 100 * a, 100 * box_alone);
 }
 
-// The formulas imported as presets: Xenodreambuie (id 11) and Menger - Mod 1
-// (id 61), at their defaults and with other values (a julia constant and
+// The formulas imported as presets: Xenodreambuie (id 11), Menger - Mod 1
+// (id 61) and the 4-D ones (4, 5, 19), at their defaults and with other values (a julia constant and
 // power 5; multipliers that take the chain off the plain Menger fold, and an offset).
 TEST_F(MandelbulberOracle, PresetFormulaSilhouettesAgree) {
   auto file = [&](const char* name, const std::string& main, const std::string& fractal) {
@@ -171,11 +171,21 @@ TEST_F(MandelbulberOracle, PresetFormulaSilhouettesAgree) {
         file("xeno_julia.fract", "formula_1 11;\nN 10;\njulia_mode true;\njulia_c 0,3 -0,4 0,2;\n", "power 5;\n"),
         file("menger_mod1.fract", "formula_1 61;\nN 12;\n", ""),
         file("menger_mod1_shifted.fract", "formula_1 61;\nN 12;\n",
-             "transf_constant_multiplier_111 1 0,85 0,9;\ntransf_addition_constant 0,15 0 0;\n")}) {
+             "transf_constant_multiplier_111 1 0,85 0,9;\ntransf_addition_constant 0,15 0 0;\n"),
+        // the 4-D formulas: Hypercomplex (4), Quaternion (5) in its Mandelbrot form, Aexion (19)
+        file("hypercomplex.fract", "formula_1 4;\nN 10;\n", ""), file("quaternion.fract", "formula_1 5;\nN 10;\n", ""),
+        file("aexion_cadd.fract", "formula_1 19;\nN 10;\n", "cadd 0,2;\n")}) {
     double a = agreement(mandelbulber_mask(f, dir), sdfc_mask(f, "", dir));
     EXPECT_GE(a, 0.97) << f;
     std::printf("%s: masks agree on %.2f %% of the pixels\n", f.c_str(), 100 * a);
   }
+  // Aexion at its default cadd -1.3 falls apart into thin separate pieces whose
+  // silhouette depends on the hit epsilon itself (sdfc's own hit mask moves by
+  // about 4 % between 0.5 and 0.25 px): held to 95 % (96.2 % measured).
+  std::string aexion = file("aexion.fract", "formula_1 19;\nN 10;\n", "");
+  double a = agreement(mandelbulber_mask(aexion, dir), sdfc_mask(aexion, "", dir));
+  EXPECT_GE(a, 0.95);
+  std::printf("%s: masks agree on %.2f %% of the pixels\n", aexion.c_str(), 100 * a);
 }
 
 }  // namespace

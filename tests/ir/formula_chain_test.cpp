@@ -207,8 +207,9 @@ TEST(FormulaPreset, EveryPresetBuildsFromItsDefaults) {
     std::string body;
     for (const formula::PresetParam& q : p->params) {
       body += body.empty() ? "" : ", ";
-      body += q.width == 1 ? fmt::format("{}: {}", q.name, q.fallback[0])
-                           : fmt::format("{}: [{}, {}, {}]", q.name, q.fallback[0], q.fallback[1], q.fallback[2]);
+      body += q.width == 1   ? fmt::format("{}: {}", q.name, q.fallback[0])
+              : q.width == 4 ? fmt::format("{}: [{}, {}, {}, {}]", q.name, q.fallback[0], q.fallback[1], q.fallback[2], q.fallback[3])
+                             : fmt::format("{}: [{}, {}, {}]", q.name, q.fallback[0], q.fallback[1], q.fallback[2]);
     }
     const std::string bare = fmt::format("{{formula: {{preset: {}}}}}", p->name);
     const std::string full = fmt::format("{{formula: {{preset: {}{}{}}}}}", p->name, body.empty() ? "" : ", ", body);

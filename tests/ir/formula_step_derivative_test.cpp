@@ -50,6 +50,9 @@ std::vector<Step> cases() {
       v.push_back(make(*d, {5}));
     } else if (d->name == "plane_fold") {
       v.push_back(make(*d, {1, 1, 0, 0.2}));
+    } else if (d->name == "quaternion") {
+      v.push_back(make(*d, {2}));
+      v.push_back(make(*d, {3}));
     } else if (d->name == "rotate") {
       v.push_back(make(*d, {1, 0, 1, 30}));
     } else {
@@ -96,11 +99,82 @@ TEST(FormulaStepDerivative, EveryStepCarriesItsJacobianAndConformalFactor) {
               << "column " << k << " row " << r << " at " << z[0] << ", " << z[1] << ", " << z[2];
           norm += fd[k][r] * fd[k][r];
         }
-      if (st.def->conformal(st) && !st.def->power && st.def->name != "kleinian_fold")
+      if (st.def->conformal(st) && !st.def->power && st.def->name != "kleinian_fold" && !st.def->four_d)  // 4-D: the next test
         EXPECT_NEAR(s.dr, std::sqrt(norm / 3), 1e-5 * std::max(1.0, s.dr)) << "the scalar factor";
     }
     EXPECT_GT(checked, 200);
   }
+}
+
+// A 4-D step: (z, w) -> (z', w'). The columns it carries start as dz/dp =
+// I, dw/dp = 0 (rows x, y, z, w of columns x, y, z), then as dz/dp = 0,
+// dw/dp = (1, 0, 0): its first column is then the step's w column.
+std::array<double, 4> stepped4(const Step& st, const std::array<double, 4>& q) {
+  RefState s;
+  s.z = {q[0], q[1], q[2]};
+  s.w = q[3];
+  s.c = {0, 0, 0};
+  s.mandel = false;
+  s.four_d = true;
+  st.def->eval(st, s);
+  return {s.z[0], s.z[1], s.z[2], s.w};
+}
+
+TEST(FormulaStepDerivative, EveryFourDStepCarriesItsJacobianWithTheWRow) {
+  std::mt19937_64 rng(12);
+  std::uniform_real_distribution<double> u(-1.6, 1.6);
+  const double h = 1e-6;
+  int steps_checked = 0;
+  for (const Step& st : cases()) {
+    if (!st.def->four_d) continue;
+    SCOPED_TRACE(std::string(st.def->name));
+    ++steps_checked;
+    int checked = 0;
+    for (int i = 0; i < 400; ++i) {
+      const std::array<double, 4> q{u(rng), u(rng), u(rng), u(rng)};
+      std::array<std::array<double, 4>, 4> fd{};  // fd[k][r]: d new_r / d q_k
+      bool smooth = true;
+      for (int k = 0; k < 4 && smooth; ++k) {
+        auto a = q, b = q, a2 = q, b2 = q;
+        a[k] += h, b[k] -= h, a2[k] += 2 * h, b2[k] -= 2 * h;
+        auto pa = stepped4(st, a), pb = stepped4(st, b), qa = stepped4(st, a2), qb = stepped4(st, b2);
+        for (int r = 0; r < 4; ++r) {
+          double d1 = (pa[r] - pb[r]) / (2 * h), d2 = (qa[r] - qb[r]) / (4 * h);
+          if (std::fabs(d1 - d2) > 1e-4 * std::max(1.0, std::fabs(d1))) smooth = false;
+          fd[k][r] = d1;
+        }
+      }
+      if (!smooth) continue;
+      ++checked;
+      RefState s;
+      s.z = {q[0], q[1], q[2]};
+      s.w = q[3];
+      s.c = {0, 0, 0};
+      s.mandel = false;
+      s.four_d = true;
+      st.def->eval(st, s);
+      double norm = 0;
+      for (int k = 0; k < 3; ++k)
+        for (int r = 0; r < 4; ++r) {
+          ASSERT_NEAR(r < 3 ? s.j[k][r] : s.jw[k], fd[k][r], 1e-5 * std::max(1.0, std::fabs(fd[k][r]))) << "column " << k << " row " << r;
+          norm += fd[k][r] * fd[k][r];
+        }
+      if (st.def->conformal(st) && !st.def->power) EXPECT_NEAR(s.dr, std::sqrt(norm / 3), 1e-5 * std::max(1.0, s.dr));
+      RefState t;
+      t.z = {q[0], q[1], q[2]};
+      t.w = q[3];
+      t.c = {0, 0, 0};
+      t.mandel = false;
+      t.four_d = true;
+      t.j = {V3{0, 0, 0}, V3{0, 0, 0}, V3{0, 0, 0}};
+      t.jw = {1, 0, 0};
+      st.def->eval(st, t);
+      for (int r = 0; r < 4; ++r)
+        ASSERT_NEAR(r < 3 ? t.j[0][r] : t.jw[0], fd[3][r], 1e-5 * std::max(1.0, std::fabs(fd[3][r]))) << "the w column, row " << r;
+    }
+    EXPECT_GT(checked, 200);
+  }
+  EXPECT_GE(steps_checked, 4);  // quaternion, hypercomplex, quadray, aexion
 }
 
 // kleinian_fold's scalar factor is the inversion's plus de_tweak.

@@ -31,21 +31,29 @@ std::string emit_chain(const Chain& c, const std::string& p, const codegen::deta
   const bool jac = pl.jacobian && what == Orbit::Distance;
   const std::string out = fmt::format("fo{}", w.fresh());
   const std::string bail = lit.real(c.bailout);
+  const bool wide = four_d(c);  // z carries w (a 3-D chain's text is unchanged)
   w.line(fmt::format("real {};  // formula: {}", out, pl.why));
   w.open("{");
   w.line(fmt::format("vec3 z = {};", p));
   w.line(fmt::format("const vec3 c = {};", c.julia ? lit.vec3(c.c) : p));
   w.line(fmt::format("const real id = {};  // dc/dp", lit.typed(c.julia ? 0 : 1)));
+  if (wide)
+    w.line(fmt::format("real zw = {}; const real cw = {};  // z's and c's fourth components", lit.real(c.w_start),
+                       lit.real(c.julia ? c.cw : 0)));
   if (jac)
     w.line("vec3 ja = v3(1.0f, 0.0f, 0.0f), jb = v3(0.0f, 1.0f, 0.0f), jc = v3(0.0f, 0.0f, 1.0f);");
   else
     w.line("real dr = 1.0f;");
+  if (jac && wide) w.line("vec3 jw = v3(0.0f, 0.0f, 0.0f);  // dw/dp");
   if (what != Orbit::Distance) w.line("real trap = 1e10f, n = 0.0f;");
-  w.line("real r = v3_length(z);");
+  const char* length = wide ? "sqrt(v3_dot(z, z) + zw * zw)" : "v3_length(z)";
+  w.line(fmt::format("real r = {};", length));
   w.line(fmt::format("mask alive = r < {};", bail));
   w.open(fmt::format("for (int i = 0; i < {} && M_ANY(alive); ++i) {{", c.iterations));
   w.line(jac ? "const vec3 z0 = z, ja0 = ja, jb0 = jb, jc0 = jc;" : "const vec3 z0 = z; const real dr0 = dr;");
+  if (wide) w.line(jac ? "const real zw0 = zw; const vec3 jw0 = jw;" : "const real zw0 = zw;");
   EmitState s{w, lit, used, jac};
+  s.four_d = wide;
   if (c.repeat_from > 0) {
     w.open("if (i == 0) {");
     emit_steps(c, s, 0);
@@ -61,17 +69,20 @@ std::string emit_chain(const Chain& c, const std::string& p, const codegen::deta
     w.line("ja = v3_select(ja0, ja, alive); jb = v3_select(jb0, jb, alive); jc = v3_select(jc0, jc, alive);");
   else
     w.line("dr = SEL(dr0, dr, alive);");
+  if (wide) w.line(jac ? "zw = SEL(zw0, zw, alive); jw = v3_select(jw0, jw, alive);" : "zw = SEL(zw0, zw, alive);");
   if (what != Orbit::Distance) {
     w.line("n = SEL(n, n + 1.0f, alive);");
     w.line(fmt::format("trap = SEL(trap, fmin(trap, {}), alive);",
                        measure.empty() ? "fmin(fabs(z.x), fmin(fabs(z.y), fabs(z.z)))" : measure));
   }
-  w.line("r = v3_length(z);");
+  w.line(fmt::format("r = {};", length));
   w.line(fmt::format("alive = alive & (r < {});", bail));
   w.close("}");
   switch (what) {
     case Orbit::Distance: {
-      std::string norm = jac ? "sqrt(v3_dot(ja, ja) + v3_dot(jb, jb) + v3_dot(jc, jc))" : "fabs(dr)";
+      std::string norm = jac ? wide ? "sqrt(v3_dot(ja, ja) + v3_dot(jb, jb) + v3_dot(jc, jc) + v3_dot(jw, jw))"
+                                    : "sqrt(v3_dot(ja, ja) + v3_dot(jb, jb) + v3_dot(jc, jc))"
+                             : "fabs(dr)";
       w.line(fmt::format("real dd = fmax({}, K(1e-30f));", norm));
       if (pl.kleinian)
         w.line(fmt::format("{{ real rxy = sqrt(z.x * z.x + z.y * z.y); {} = fmax(rxy - {}, fabs(rxy * z.z) / fmax(r, K(1e-20f))) / dd; }}",

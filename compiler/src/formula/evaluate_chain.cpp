@@ -19,8 +19,13 @@ OrbitResult evaluate(const Chain& c, const std::array<double, 3>& p,
   s.c = c.julia ? c.c : p;
   s.mandel = !c.julia;
   s.jacobian = pl.jacobian;
+  s.four_d = four_d(c);
+  s.w = c.w_start;
+  s.cw = c.julia ? c.cw : 0;
+  // a 4-D chain's r is |(z, w)|
+  auto radius = [&] { return s.four_d ? std::sqrt(length(s.z) * length(s.z) + s.w * s.w) : length(s.z); };
   double trap = 1e10, n = 0;
-  double r = length(s.z);
+  double r = radius();
   for (int i = 0; i < c.iterations && r < c.bailout; ++i) {
     for (size_t k = i == 0 ? 0 : size_t(c.repeat_from); k < c.steps.size(); ++k) {
       const Step& st = c.steps[k];
@@ -28,12 +33,13 @@ OrbitResult evaluate(const Chain& c, const std::array<double, 3>& p,
     }
     n += 1;
     trap = std::min(trap, measure ? measure(s.z) : std::min({std::fabs(s.z[0]), std::fabs(s.z[1]), std::fabs(s.z[2])}));
-    r = length(s.z);
+    r = radius();
   }
   double norm = std::fabs(s.dr);
   if (pl.jacobian) {
     norm = 0;
     for (const V3& col : s.j) norm += col[0] * col[0] + col[1] * col[1] + col[2] * col[2];
+    norm += s.jw[0] * s.jw[0] + s.jw[1] * s.jw[1] + s.jw[2] * s.jw[2];
     norm = std::sqrt(norm);
   }
   norm = std::max(norm, 1e-30);

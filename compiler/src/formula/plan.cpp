@@ -10,6 +10,12 @@
 
 namespace sdfc::formula {
 
+bool four_d(const Chain& c) {
+  for (const Step& s : c.steps)
+    if (s.def->four_d) return true;
+  return false;
+}
+
 Plan plan(const Chain& c) {
   Plan p;
   const Step* non_conformal = nullptr;
@@ -73,8 +79,13 @@ std::string show_step(const Step& s) {
 
 std::string describe(const Chain& c) {
   std::string out = c.preset.empty() ? "" : fmt::format("preset {} expands to:\n", c.preset);
-  out += fmt::format("formula: {} iterations, bailout {}, {}\n", c.iterations, c.bailout,
-                                c.julia ? fmt::format("julia c = [{}, {}, {}]", c.c[0], c.c[1], c.c[2]) : "c = the point");
+  if (four_d(c))
+    out += fmt::format("formula (4-D: z has a fourth component w, starting at {}): {} iterations, bailout {}, {}\n", c.w_start,
+                       c.iterations, c.bailout,
+                       c.julia ? fmt::format("julia c = [{}, {}, {}, {}]", c.c[0], c.c[1], c.c[2], c.cw) : "c = the point (w 0)");
+  else
+    out += fmt::format("formula: {} iterations, bailout {}, {}\n", c.iterations, c.bailout,
+                       c.julia ? fmt::format("julia c = [{}, {}, {}]", c.c[0], c.c[1], c.c[2]) : "c = the point");
   for (size_t i = 0; i < c.steps.size(); ++i)
     out += fmt::format("  {}{}. {}\n", i, c.repeat_from == int(i) && i ? " (repeat from here)" : "", show_step(c.steps[i]));
   out += "  estimator: " + plan(c).why + "\n";

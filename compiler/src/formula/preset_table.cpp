@@ -10,6 +10,7 @@ extern const Preset kXenodreambuiePreset, kEiffieMsltoePreset, kKochPreset;
 extern const Preset kAboxMod11Preset, kAmazingSurfMod2Preset, kAmazingSurfMod4Preset, kAboxMod15Preset;
 extern const Preset kMengerMod1Preset, kMengerSmoothPreset, kMenger3Preset, kMengerCrossKifsPreset;
 extern const Preset kJosKleinianPreset;
+extern const Preset kJuliaPreset, kQuaternionPreset, kHypercomplexPreset, kAexionPreset;
 
 const std::vector<const Preset*>& presets() {
   static const std::vector<const Preset*> all =
@@ -18,7 +19,8 @@ const std::vector<const Preset*>& presets() {
                               &kXenodreambuiePreset, &kEiffieMsltoePreset, &kKochPreset,
                               &kAboxMod11Preset, &kAmazingSurfMod2Preset, &kAmazingSurfMod4Preset, &kAboxMod15Preset,
                               &kMengerMod1Preset, &kMengerSmoothPreset, &kMenger3Preset, &kMengerCrossKifsPreset,
-                              &kJosKleinianPreset});
+                              &kJosKleinianPreset,
+                              &kJuliaPreset, &kQuaternionPreset, &kHypercomplexPreset, &kAexionPreset});
   return all;
 }
 

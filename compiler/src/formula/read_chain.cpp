@@ -102,6 +102,8 @@ class ChainReader {
     entry_start_.push_back(out.steps.size());
     if (def->name == "scale_xyz" && std::min({std::fabs(st.a[0]), std::fabs(st.a[1]), std::fabs(st.a[2])}) < 1e-6)
       error(value ? value->loc : st.loc, what + ": no factor may be 0", "a zero factor flattens space and the estimate breaks");
+    if (def->name == "quaternion" && st.a[0] != 2 && st.a[0] != 3)
+      error(value ? value->loc : st.loc, fmt::format("{}: power must be 2 or 3, got {}", what, st.a[0]));
     for (int k = 0; k < repeat; ++k) out.steps.push_back(st);
   }
 
@@ -184,12 +186,25 @@ class ChainReader {
 
 }  // namespace
 
-void read_settings(frontend::MapReader& m, Chain& c, int iterations, double bailout) {
+void read_settings(frontend::ValueReader& r, frontend::MapReader& m, Chain& c, int iterations, double bailout) {
   c.iterations = m.integer("iterations", iterations, 1, kMaxIterations);
   c.bailout = m.number("bailout", bailout, Range::closed(1, 1e6));
-  if (m.get("julia")) {
+  if (const SourceValue* v = m.get("julia")) {
     c.julia = true;
-    c.c = m.vec3("julia", {0, 0, 0});
+    const bool four = v->is_seq() && v->items.size() == 4;
+    if (four && four_d(c)) {
+      // a 4-D chain's constant: x, y, z and w
+      std::vector<double> x = r.vecn(*v, "formula.julia", 4);
+      c.c = {x[0], x[1], x[2]};
+      c.cw = x[3];
+    } else if (four) {
+      r.sink().error(v->loc, "formula.julia: 4 numbers need a 4-D chain, this chain's z has 3 components",
+                     "give [x, y, z], or add a step that uses w (quaternion, hypercomplex, aexion)");
+    } else if (four_d(c) && v->is_seq() && v->items.size() != 3) {
+      r.sink().error(v->loc, fmt::format("formula.julia: expected 3 or 4 numbers (x, y, z and w), got {}", v->items.size()));
+    } else {
+      c.c = m.vec3("julia", {0, 0, 0});  // in a 4-D chain c's w keeps its value
+    }
   }
   // A preset's own choice is the default (the words in DeChoice's order).
   static const char* const kWords[] = {"auto", "linear", "log", "jacobian", "kleinian", "jos_kleinian"};
@@ -210,7 +225,6 @@ std::optional<Chain> read_chain(frontend::ValueReader& r, const SourceValue& bod
   frontend::MapReader m(r, body, "formula", {"iterations", "bailout", "iterate", "julia", "de", "kleinian_size", "repeat_from"});
   if (!m.ok()) return std::nullopt;
   Chain c;
-  read_settings(m, c, 12, 100);
   const SourceValue* list = m.require("iterate");
   if (!list) return std::nullopt;
   if (!list->is_seq() || list->items.empty()) {
@@ -226,6 +240,7 @@ std::optional<Chain> read_chain(frontend::ValueReader& r, const SourceValue& bod
       return std::nullopt;
     }
   }
+  read_settings(r, m, c, 12, 100);  // after the steps: julia's count depends on them
   if (const SourceValue* v = m.get("repeat_from")) {
     int entry = r.integer(*v, "formula.repeat_from", 0, kMaxSteps);
     if (entry >= int(list->items.size()))

@@ -69,6 +69,11 @@ std::optional<Chain> read_preset(frontend::ValueReader& r, const Preset& p, cons
     const frontend::Range range = frontend::Range::closed(q.lo, q.hi);
     if (q.width == 1) {
       values.push_back(m.number(q.name, q.fallback[0], range));
+    } else if (q.width == 4) {
+      const SourceValue* v = m.get(q.name);
+      std::vector<double> x = v ? r.vecn(*v, what + "." + std::string(q.name), 4, range)
+                                : std::vector<double>(q.fallback.begin(), q.fallback.end());
+      values.insert(values.end(), x.begin(), x.end());
     } else {
       auto v = m.vec3(q.name, {q.fallback[0], q.fallback[1], q.fallback[2]}, range);
       values.insert(values.end(), v.begin(), v.end());
@@ -79,7 +84,13 @@ std::optional<Chain> read_preset(frontend::ValueReader& r, const Preset& p, cons
   ChainBuilder b(c, key.loc);
   const PresetArgs args(p.params, std::move(values));
   p.build(args, b);  // may set de and kleinian_size
-  read_settings(m, c, p.iterations, p.bailout);
+  for (const Step& st : c.steps)
+    if (st.def->name == "quaternion" && st.a[0] != 2 && st.a[0] != 3) {  // the julia preset's degree
+      const SourceValue* v = m.get("degree");
+      r.sink().error(v ? v->loc : key.loc, fmt::format("{}.degree: must be 2 or 3, got {}", what, st.a[0]));
+      break;
+    }
+  read_settings(r, m, c, p.iterations, p.bailout);
   if (p.as_builtin) c.builtin = p.as_builtin(args, c);
   if (!clean || !r.sink().empty()) return std::nullopt;
   return c;

@@ -94,9 +94,11 @@ void translate_eval(const Step& st, RefState& s) {
   for (int i = 0; i < 3; ++i) s.z[i] += st.a[i];
 }
 
-// ---- add_c: z + c, c = the point (dz/dp gains the identity) or julia's constant
+// ---- add_c: z + c, c = the point (dz/dp gains the identity) or julia's
+// constant; in a 4-D chain w gains c's w (0 for the point: dw/dp is unchanged)
 void add_c_emit(const Step&, EmitState& s) {
   s.w.line("z = v3_add(z, c);  // add_c");
+  if (s.four_d) s.w.line("zw = zw + cw;");
   if (s.jacobian)
     s.w.line("ja.x += id; jb.y += id; jc.z += id;");
   else
@@ -104,6 +106,7 @@ void add_c_emit(const Step&, EmitState& s) {
 }
 void add_c_eval(const Step&, RefState& s) {
   for (int i = 0; i < 3; ++i) s.z[i] += s.c[i];
+  s.w += s.cw;
   if (!s.mandel) return;
   for (int i = 0; i < 3; ++i) s.j[i][i] += 1;
   s.dr += 1;

@@ -8,12 +8,14 @@ extern const StepDef kBoxFold, kSphereFold, kAbs, kPlaneFold, kOctaFold, kTetraF
 extern const StepDef kRotate, kScale, kScaleXYZ, kTranslate, kAddC, kBulbPower, kExpr;
 extern const StepDef kSphericalInvert, kKleinianFold, kSurfFold, kPolyfold, kIcosaFold;
 extern const StepDef kWrap, kKleinianFlip;
+extern const StepDef kQuaternion, kHypercomplex, kQuadray, kAexion;  // 4-D
 
 const std::vector<const StepDef*>& steps() {
   static const std::vector<const StepDef*> all = sorted_by_name<StepDef>(
       {&kAbs, &kAddC, &kBoxFold, &kBulbPower, &kExpr, &kMengerFold, &kOctaFold, &kPlaneFold, &kRotate, &kScale, &kScaleXYZ,
        &kSphereFold, &kTetraFold, &kTranslate, &kSphericalInvert, &kKleinianFold, &kSurfFold, &kPolyfold, &kIcosaFold,
-       &kWrap, &kKleinianFlip});
+       &kWrap, &kKleinianFlip,
+       &kQuaternion, &kHypercomplex, &kQuadray, &kAexion});
   return all;
 }
 

@@ -57,4 +57,27 @@ Node menger_mod1(const FormulaInput& in) {
                      12);
 }
 
+// The 4-D formulas (x + y i + z j + w k, w starting at 0, r = |(z, w)|):
+// quaternion.cl's Mandelbrot form, hypercomplex.cl (both + (c, 0), c the
+// point or julia_c) and aexion.cl, which makes z and c 4-D on its first
+// iteration and adds c itself (Mandelbulber adds none on top by default).
+Node quaternion_mandelbrot(const FormulaInput& in) {
+  require_c_added(in);
+  return preset_node(in, "quaternion", {}, 1000);
+}
+
+Node hypercomplex(const FormulaInput& in) {
+  require_c_added(in);
+  return preset_node(in, "hypercomplex", {}, 1000);
+}
+
+Node aexion(const FormulaInput& in) {
+  if (adds_c(in, false)) unsupported_setting(in, fmt::format("dont_add_c_constant_{}", in.slot), "true (c added twice)");
+  Vec3 k = in.main.vec3("fractal_constant_factor");
+  if (k != Vec3{1, 1, 1}) unsupported_setting(in, "fractal_constant_factor", vec(k));
+  double cadd = in.fractal.number("cadd");
+  if (!(std::fabs(cadd) <= 100)) unsupported_setting(in, "cadd", num(cadd));  // the preset's range
+  return preset_node(in, "aexion", {{"cadd", num(cadd), from(in, "cadd")}}, 1000);
+}
+
 }  // namespace sdfc::fract

@@ -75,9 +75,9 @@ Node menger_sponge(const FormulaInput& in) {
 
 // The quaternion formula (quaternion.cl) keeps w = 0, so in julia mode it is
 // the quaternion Julia set of c = (julia_c, 0) on the slice w = 0, with the
-// same log estimator; its Mandelbrot form (c = the point) has no sdfc kind.
+// same log estimator; its Mandelbrot form (c = the point) is the quaternion preset.
 Node quaternion(const FormulaInput& in) {
-  if (!in.julia) unsupported_setting(in, "julia_mode", "false (the Mandelbrot form; julia mode maps)");
+  if (!in.julia) return quaternion_mandelbrot(in);
   require_c_added(in);
   for (double c : in.julia_c)
     if (std::fabs(c) > 4) unsupported_setting(in, "julia_c", vec(in.julia_c));
@@ -93,11 +93,13 @@ Node quaternion(const FormulaInput& in) {
 constexpr Formula kMapped[] = {
     {2, "Mandelbulb", 10, mandelbulb, mandelbulb_chain, true},  // its writer mirrors the alpha offset
     {3, "Mandelbulb - Power 2", 10, mandelbulb_power2, mandelbulb_power2_chain, true},
+    {4, "Hypercomplex", 10, hypercomplex, nullptr, true},
     {5, "Quaternion", 10, quaternion, nullptr, true},  // y -> -y commutes with squaring: J(c) mirrored is J(mirrored c)
     {7, "Menger sponge", 10, menger_sponge, menger_chain, true},
     {8, "Mandelbox", 100, mandelbox, mandelbox_chain, true},
     {10, "Kaleidoscopic IFS", 10, ifs, ifs_chain, true},  // its writer mirrors its vectors and rotations
     {11, "Xenodreambuie", 10, xenodreambuie, nullptr, true},
+    {19, "Aexion", 10, aexion, nullptr, true},
     {61, "Menger - Mod 1", 10, menger_mod1, nullptr, true},
 };
 

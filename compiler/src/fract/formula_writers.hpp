@@ -35,5 +35,8 @@ Node mandelbulb_power2(const FormulaInput& in);
 Node ifs(const FormulaInput& in);
 Node xenodreambuie(const FormulaInput& in);  // id 11, formula_presets.cpp
 Node menger_mod1(const FormulaInput& in);    // id 61
+Node quaternion_mandelbrot(const FormulaInput& in);  // id 5 without julia mode
+Node hypercomplex(const FormulaInput& in);           // id 4
+Node aexion(const FormulaInput& in);                 // id 19
 
 }  // namespace sdfc::fract

@@ -72,6 +72,7 @@ constexpr Row kFractal[] = {
     {"IFS_rotations_#", "0 0 0"}, {"IFS_scale", "2"}, {"mandelbox_rotation_main", "0 0 0"},
     {"transf_constant_multiplier_111", "1 1 1"}, {"transf_addition_constant", "0 0 0"}, {"transf_rotation_enabled", "0"},
     {"transf_function_enabledx_false", "0"}, {"transf_function_enabled_false", "0"},
+    {"cadd", "-1.3"},  // aexion
 };
 
 template <size_t N>

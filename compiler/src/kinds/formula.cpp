@@ -77,6 +77,12 @@ ir::Props props(const ir::Node& n) {
   p.known = true;
   // The set lies inside the bailout ball: an orbit from outside it stops at once.
   p.bounds = ir::Box3::cube(c.bailout);
+  // A quaternion Julia chain (q^n + c) lies inside the ball where |q|^n - |q| = |c|,
+  // as the built-in julia: does (the bound search then starts from the same box).
+  if (c.julia && c.steps.size() == 2 && c.steps[0].def->name == "quaternion" && c.steps[1].def->name == "add_c") {
+    const double cn = std::sqrt(c.c[0] * c.c[0] + c.c[1] * c.c[1] + c.c[2] * c.c[2] + c.cw * c.cw);
+    p.bounds = ir::Box3::cube(std::min(c.bailout, ir::julia_set_radius(c.steps[0].a[0], cn)));
+  }
   p.cls = ir::DistanceClass::Estimate;
   p.lipschitz = 1;
   const double per_step = formula::plan(c).jacobian ? 40 : 12;

@@ -58,6 +58,10 @@ struct Chain {
   double bailout = 100;
   bool julia = false;
   std::array<double, 3> c{0, 0, 0};  // julia's constant
+  // 4-D chains (a step uses w, the fourth component of z): julia's w, and
+  // w's value at the start (the 3-D slice through the 4-D set).
+  double cw = 0;
+  double w_start = 0;
   DeChoice de = DeChoice::Auto;
   int repeat_from = 0;  // iterations after the first start at this step
   double kleinian_size = 1;  // de: kleinian's cylinder radius
@@ -65,6 +69,9 @@ struct Chain {
   std::string preset;        // the preset it was expanded from, if any
   std::optional<KindNode> builtin;  // set: the preset renders as this built-in node
 };
+
+// Whether z carries a fourth component w: some step uses it.
+bool four_d(const Chain& c);
 
 // The estimator the compiler chose and why (`sdfc check` prints it).
 struct Plan {

@@ -15,8 +15,8 @@ namespace sdfc::formula {
 
 struct PresetParam {
   std::string_view name;
-  int width;  // 1 or 3
-  std::array<double, 3> fallback;
+  int width;  // 1, 3 or 4 (a quaternion)
+  std::array<double, 4> fallback;
   double lo, hi;
   std::string_view what;  // one line for the docs
 };
@@ -29,6 +29,10 @@ class PresetArgs {
   std::array<double, 3> v(std::string_view name) const {
     size_t i = at(name);
     return {v_.at(i), v_.at(i + 1), v_.at(i + 2)};
+  }
+  std::array<double, 4> v4(std::string_view name) const {
+    size_t i = at(name);
+    return {v_.at(i), v_.at(i + 1), v_.at(i + 2), v_.at(i + 3)};
   }
 
  private:

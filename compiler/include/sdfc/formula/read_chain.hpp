@@ -18,6 +18,7 @@ std::optional<Chain> read_named_preset(frontend::ValueReader& r, const SourceVal
 
 // The settings every chain has: iterations, bailout, julia, de, kleinian_size
 // (the fallbacks: the given counts and c's own de and kleinian_size).
-void read_settings(frontend::MapReader& m, Chain& c, int iterations, double bailout);
+// In a 4-D chain julia may give w too (read after the steps).
+void read_settings(frontend::ValueReader& r, frontend::MapReader& m, Chain& c, int iterations, double bailout);
 
 }  // namespace sdfc::formula

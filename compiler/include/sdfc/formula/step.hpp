@@ -32,6 +32,7 @@ struct StepParam {
 
 // The orbit's state in double for the reference: z, the scalar derivative
 // and the Jacobian's columns (dz/dpx, dz/dpy, dz/dpz), and what add_c adds.
+// A 4-D chain adds w, its row of the Jacobian (dw/dp) and c's w.
 struct RefState {
   V3 z;
   double dr = 1;
@@ -39,16 +40,21 @@ struct RefState {
   V3 c;
   bool mandel = true;  // c = p: add_c adds the identity to J and 1 to dr
   bool jacobian = false;
+  bool four_d = false;
+  double w = 0, cw = 0;
+  V3 jw{0, 0, 0};
 };
 
 // Where the emitter keeps the state: z, dr (scalar) or ja/jb/jc (columns),
-// c (the vec3 add_c adds) and `id` (1 when c = p, else 0).
+// c (the vec3 add_c adds) and `id` (1 when c = p, else 0). A 4-D chain adds
+// the reals zw (z's w) and cw (c's w) and, with the Jacobian, the vec3 jw (dw/dp).
 struct EmitState {
   codegen::detail::CodeWriter& w;
   const codegen::detail::Literals& lit;
   std::set<std::string>& used;
   bool jacobian;
   int fresh = 0;  // names temporaries
+  bool four_d = false;
   std::string tmp(const char* base) { return base + std::to_string(fresh++); }
 };
 
@@ -62,6 +68,7 @@ struct StepDef {
   void (*emit)(const Step&, EmitState&);
   void (*eval)(const Step&, RefState&);
   std::string_view what;  // one line for the docs and `sdfc check`
+  bool four_d = false;    // reads or writes w: the chain carries a 4-D z
 };
 
 const std::vector<const StepDef*>& steps();  // every step, by name
@@ -71,6 +78,12 @@ const StepDef* find_step(std::string_view name);
 bool always_conformal(const Step&);
 // Applies the linear map `m` (row-major) to every Jacobian column.
 void apply_rows(RefState& s, const std::array<double, 9>& m);
+// 4-D steps (step_four_d.cpp): the 4x4 Jacobian `m` of the step (row-major
+// over x, y, z, w) applied to the columns (ja, jw.x), (jb, jw.y), (jc, jw.z).
+// Emitted: its entries as expressions of the old z and w ("" for 0), written
+// before the step changes z.
+void emit_rows4(EmitState& s, const std::array<std::string, 16>& m);
+void apply_rows4(RefState& s, const std::array<double, 16>& m);
 
 }  // namespace sdfc::formula
 
