@@ -127,6 +127,11 @@ std::vector<Group> groups() {
         {"preset_koch", "koch: {iterations: 8}", 2.0},
         {"preset_menger_smooth", "menger_smooth: {iterations: 6}", 2.2}},
        6.0},
+      // The hybrid preset: a chain whose windows repeat every bulb_repeat + box_repeat iterations.
+      {"formula_presets_hybrid",
+       {{"preset_hybrid", "formula: {preset: hybrid, box_repeat: 2, iterations: 9}", 1.8},
+        {"preset_hybrid_two_bulbs", "formula: {preset: hybrid, power: 5, bulb_repeat: 2, scale: -1.8, iterations: 8}", 1.8}},
+       5.0},
   };
 }
 

@@ -7,6 +7,7 @@ namespace sdfc::formula {
 extern const Preset kMandelbulbPreset, kMandelboxPreset, kMengerPreset, kSierpinskiPreset, kKifsPreset;
 extern const Preset kBulbPower2Preset, kPseudoKleinianPreset, kAmazingSurfPreset, kBoxFoldBulbPow2Preset;
 extern const Preset kXenodreambuiePreset, kEiffieMsltoePreset, kKochPreset;
+extern const Preset kHybridPreset;
 extern const Preset kAboxMod11Preset, kAmazingSurfMod2Preset, kAmazingSurfMod4Preset, kAboxMod15Preset;
 extern const Preset kMengerMod1Preset, kMengerSmoothPreset, kMenger3Preset, kMengerCrossKifsPreset;
 
@@ -15,6 +16,7 @@ const std::vector<const Preset*>& presets() {
       sorted_by_name<Preset>({&kMandelbulbPreset, &kMandelboxPreset, &kMengerPreset, &kSierpinskiPreset, &kKifsPreset,
                               &kBulbPower2Preset, &kPseudoKleinianPreset, &kAmazingSurfPreset, &kBoxFoldBulbPow2Preset,
                               &kXenodreambuiePreset, &kEiffieMsltoePreset, &kKochPreset,
+                              &kHybridPreset,
                               &kAboxMod11Preset, &kAmazingSurfMod2Preset, &kAmazingSurfMod4Preset, &kAboxMod15Preset,
                               &kMengerMod1Preset, &kMengerSmoothPreset, &kMenger3Preset, &kMengerCrossKifsPreset});
   return all;

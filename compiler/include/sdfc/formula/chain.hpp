@@ -28,6 +28,7 @@ struct Step {
   std::vector<expr::ExprPtr> partials;
   int from = 0;                      // runs on iterations from <= i < until
   int until = kMaxIterations;
+  int period = 0;                    // > 0: from/until count iterations modulo period (a preset's cycle)
   SourceLoc loc;
 };
 
@@ -45,6 +46,8 @@ struct Chain {
   DeChoice de = DeChoice::Auto;
   int repeat_from = 0;  // iterations after the first start at this step
   double kleinian_size = 1;  // de: kleinian's cylinder radius
+  double set_radius = 0;     // > 0: the set lies in this ball (far field and bounds), else in the bailout ball
+  double bounds_trust = 0;   // > 0: the share of the estimate the bounds search believes, else the kind's (half)
   std::string preset;        // the preset it was expanded from, if any
 };
 
