@@ -50,7 +50,9 @@ std::string show_step(const Step& s) {
   std::string out(s.def->name);
   size_t at = 0;
   for (const StepParam& q : s.def->params) {
-    if (q.width == 1)
+    if (!q.words.empty())
+      out += fmt::format(" {} {}", q.name, q.words.at(size_t(s.a[at])));
+    else if (q.width == 1)
       out += fmt::format(" {} {}", q.name, s.a[at]);
     else
       out += fmt::format(" {} [{}, {}, {}]", q.name, s.a[at], s.a[at + 1], s.a[at + 2]);

@@ -8,6 +8,7 @@ extern const Preset kMandelbulbPreset, kMandelboxPreset, kMengerPreset, kSierpin
 extern const Preset kBulbPower2Preset, kPseudoKleinianPreset, kAmazingSurfPreset, kBoxFoldBulbPow2Preset;
 extern const Preset kXenodreambuiePreset, kEiffieMsltoePreset, kKochPreset;
 extern const Preset kHybridPreset;
+extern const Preset kGeneralizedFoldBoxPreset;
 extern const Preset kAboxMod11Preset, kAmazingSurfMod2Preset, kAmazingSurfMod4Preset, kAboxMod15Preset;
 extern const Preset kMengerMod1Preset, kMengerSmoothPreset, kMenger3Preset, kMengerCrossKifsPreset;
 
@@ -17,6 +18,7 @@ const std::vector<const Preset*>& presets() {
                               &kBulbPower2Preset, &kPseudoKleinianPreset, &kAmazingSurfPreset, &kBoxFoldBulbPow2Preset,
                               &kXenodreambuiePreset, &kEiffieMsltoePreset, &kKochPreset,
                               &kHybridPreset,
+                              &kGeneralizedFoldBoxPreset,
                               &kAboxMod11Preset, &kAmazingSurfMod2Preset, &kAmazingSurfMod4Preset, &kAboxMod15Preset,
                               &kMengerMod1Preset, &kMengerSmoothPreset, &kMenger3Preset, &kMengerCrossKifsPreset});
   return all;

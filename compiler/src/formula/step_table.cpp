@@ -7,10 +7,12 @@ namespace sdfc::formula {
 extern const StepDef kBoxFold, kSphereFold, kAbs, kPlaneFold, kOctaFold, kTetraFold, kMengerFold;
 extern const StepDef kRotate, kScale, kScaleXYZ, kTranslate, kAddC, kBulbPower, kExpr;
 extern const StepDef kSphericalInvert, kKleinianFold, kSurfFold, kPolyfold, kIcosaFold;
+extern const StepDef kPolyhedralFold;
 
 const std::vector<const StepDef*>& steps() {
   static const std::vector<const StepDef*> all = sorted_by_name<StepDef>(
       {&kAbs, &kAddC, &kBoxFold, &kBulbPower, &kExpr, &kMengerFold, &kOctaFold, &kPlaneFold, &kRotate, &kScale, &kScaleXYZ,
+       &kPolyhedralFold,
        &kSphereFold, &kTetraFold, &kTranslate, &kSphericalInvert, &kKleinianFold, &kSurfFold, &kPolyfold, &kIcosaFold});
   return all;
 }
