@@ -112,9 +112,10 @@ void fold_emit(const Step& st, EmitState& s) {
   const std::vector<V3> nv = normals(int(st.a[0]));
   const std::string arr = s.tmp("pfn");
   std::string init;
-  for (const V3& n : nv) init += (init.empty() ? "" : ", ") + s.lit.vec3(n);
+  for (const V3& n : nv)
+    for (double x : n) init += (init.empty() ? "" : ", ") + s.lit.real(x);
   s.w.open("{");
-  s.w.line(fmt::format("const vec3 {}[{}] = {{{}}};  // polyhedral_fold: the face normals", arr, nv.size(), init));
+  s.w.line(fmt::format("const scalar {}[{}] = {{{}}};  // polyhedral_fold: the face normals", arr, 3 * nv.size(), init));
   if (s.jacobian) {
     s.used.insert("fold_polyhedral_j");
     s.w.line(fmt::format("fold_polyhedral_j(&z, &ja, &jb, &jc, {}, {});", arr, nv.size()));
