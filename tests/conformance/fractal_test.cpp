@@ -144,6 +144,21 @@ std::vector<Group> groups() {
         {"preset_aexion", "aexion: {iterations: 8}", 2.0},
         {"chain_hypercomplex_julia_w", "formula: {iterations: 8, bailout: 4, julia: [-0.3, 0.5, 0.1, 0.2], iterate: [hypercomplex, add_c]}", 1.6}},
        5.0},
+      // The hybrid preset: a chain whose windows repeat every bulb_repeat + box_repeat iterations.
+      {"formula_presets_hybrid",
+       {{"preset_hybrid", "formula: {preset: hybrid, box_repeat: 2, iterations: 9}", 1.8},
+        {"preset_hybrid_two_bulbs", "formula: {preset: hybrid, power: 5, bulb_repeat: 2, scale: -1.8, iterations: 8}", 1.8}},
+       5.0},
+      // The Generalized Fold Box and its polyhedral fold (face, edge and corner folds) with the scalar
+      // derivative and the Jacobian.
+      {"formula_presets_generalized_fold_box",
+       {{"preset_generalized_fold_box", "generalized_fold_box: {scale: -1.5, iterations: 10}", 2.6},
+        {"preset_generalized_fold_box_icosa", "generalized_fold_box: {generalized_fold_type: 5, scale: -1.5, iterations: 10}", 2.6},
+        {"chain_polyhedral_jacobian",
+         "formula: {iterations: 10, de: jacobian, iterate: [{polyhedral_fold: {type: dodecahedron}}, sphere_fold, {scale: -1.5}, add_c]}",
+         2.6},
+        {"chain_polyhedral_prism", "formula: {iterations: 10, iterate: [{polyhedral_fold: pentagonal_prism}, sphere_fold, {scale: 2}, add_c]}", 2.6}},
+       7.0},
   };
 }
 

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <sstream>
 
 #include "e2e_support.hpp"
 #include "sdfc/compile.hpp"
@@ -76,6 +78,30 @@ TEST(FormulaImage, JuliaPresetMatchesBuiltinJulia) {
   sdfrt::FloatImage builtin = render(std::move(kind), 8);
   double share = differing(preset, builtin);
   fmt::print("[formula-image] julia preset vs built-in julia: {:.3f} % of pixels differ by > 4/255\n", 100 * share);
+  EXPECT_LE(share, 0.005);
+}
+
+// The hybrid preset against the built-in hybrid kind it spells out, on the
+// kind's example view (examples/hybrid.yaml's camera, lights and orbit-trap
+// material): the same orbit step for step, the same escape radius and the
+// same linear estimate, so the images must agree.
+TEST(FormulaImage, HybridPresetMatchesTheHybridKind) {
+  const std::string path = (std::filesystem::path(SDFC_SOURCE_DIR) / "examples" / "formulas" / "hybrid_preset.yaml").string();
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string kind = text.str();
+  const size_t at = kind.find("  formula: {preset: hybrid");
+  ASSERT_NE(at, std::string::npos);
+  kind.replace(at, kind.find('\n', at) - at,
+               "  hybrid: {steps: [{mandelbulb: {power: 8}}, {mandelbox: {scale: 2, min_radius: 0.5, fixed_radius: 1, "
+               "folding_limit: 1}}], repeat: [1, 2], iterations: 12, bailout: 4}");
+  SourceValue doc = load_yaml_text(kind, "hybrid-kind.yaml");
+  apply_overrides(doc, {"render.width=320", "render.height=180"});
+  sdfrt::FloatImage builtin = render(build_module(doc, "hybrid-kind.yaml"), 8);
+  sdfrt::FloatImage preset = render_example("hybrid_preset.yaml", {});
+  double share = differing(preset, builtin);
+  fmt::print("[formula-image] hybrid preset vs hybrid kind: {:.3f} % of pixels differ by > 4/255\n", 100 * share);
   EXPECT_LE(share, 0.005);
 }
 

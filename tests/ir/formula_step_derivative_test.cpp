@@ -48,6 +48,8 @@ std::vector<Step> cases() {
     } else if (d->name == "polyfold") {
       v.push_back(make(*d, {3}));
       v.push_back(make(*d, {5}));
+    } else if (d->name == "polyhedral_fold") {
+      for (int type = 0; type < 8; ++type) v.push_back(make(*d, {double(type)}));
     } else if (d->name == "plane_fold") {
       v.push_back(make(*d, {1, 1, 0, 0.2}));
     } else if (d->name == "quaternion") {

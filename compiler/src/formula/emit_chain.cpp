@@ -15,8 +15,11 @@ namespace {
 void emit_steps(const Chain& c, EmitState& s, size_t first) {
   for (size_t k = first; k < c.steps.size(); ++k) {
     const Step& st = c.steps[k];
-    const bool windowed = st.from > 0 || st.until < c.iterations;
-    if (windowed) s.w.open(fmt::format("if (i >= {} && i < {}) {{  // {} on iterations {} to {}", st.from, st.until,
+    const bool windowed = st.period > 0 || st.from > 0 || st.until < c.iterations;
+    if (st.period > 0)
+      s.w.open(fmt::format("if (i % {0} >= {1} && i % {0} < {2}) {{  // {3} on iterations {1} to {4} of every {0}", st.period,
+                           st.from, st.until, st.def->name, st.until - 1));
+    else if (windowed) s.w.open(fmt::format("if (i >= {} && i < {}) {{  // {} on iterations {} to {}", st.from, st.until,
                                        st.def->name, st.from, std::min(st.until, c.iterations) - 1));
     st.def->emit(st, s);
     if (windowed) s.w.close();
@@ -96,9 +99,10 @@ std::string emit_chain(const Chain& c, const std::string& p, const codegen::deta
       w.line("// far field: the set lies inside the bailout ball, so beyond twice its radius the distance to");
       w.line("// the ball is a true bound");
       w.line(fmt::format("real r0 = v3_length({});", p));
+      const double ball = c.set_radius > 0 ? c.set_radius : c.bailout;
       // jos_kleinian's set fills space: the chain keeps the part inside the bailout ball
       if (pl.jos_kleinian) w.line(fmt::format("{0} = fmax({0}, r0 - {1});", out, bail));
-      w.line(fmt::format("{0} = SEL({0}, r0 - {1}, r0 > {2});", out, bail, lit.real(2 * c.bailout)));
+      w.line(fmt::format("{0} = SEL({0}, r0 - {1}, r0 > {2});", out, lit.real(ball), lit.real(2 * ball)));
       break;
     }
     case Orbit::Trap: w.line(fmt::format("{} = trap;", out)); break;

@@ -29,7 +29,8 @@ OrbitResult evaluate(const Chain& c, const std::array<double, 3>& p,
   for (int i = 0; i < c.iterations && r < c.bailout; ++i) {
     for (size_t k = i == 0 ? 0 : size_t(c.repeat_from); k < c.steps.size(); ++k) {
       const Step& st = c.steps[k];
-      if (i >= st.from && i < st.until) st.def->eval(st, s);
+      const int at = st.period > 0 ? i % st.period : i;
+      if (at >= st.from && at < st.until) st.def->eval(st, s);
     }
     n += 1;
     trap = std::min(trap, measure ? measure(s.z) : std::min({std::fabs(s.z[0]), std::fabs(s.z[1]), std::fabs(s.z[2])}));
@@ -53,8 +54,9 @@ OrbitResult evaluate(const Chain& c, const std::array<double, 3>& p,
     d = std::min(y, c.jos_cap) / std::max(norm, c.jos_min_dr);
   }
   double r0 = length(p);
+  const double ball = c.set_radius > 0 ? c.set_radius : c.bailout;
   if (pl.jos_kleinian) d = std::max(d, r0 - c.bailout);
-  if (r0 > 2 * c.bailout) d = r0 - c.bailout;
+  if (r0 > 2 * ball) d = r0 - ball;
   return {d, trap, n, r};
 }
 

@@ -61,7 +61,9 @@ std::string show_step(const Step& s) {
   std::string out(s.def->name);
   size_t at = 0;
   for (const StepParam& q : s.def->params) {
-    if (q.width == 1)
+    if (!q.words.empty())
+      out += fmt::format(" {} {}", q.name, q.words.at(size_t(s.a[at])));
+    else if (q.width == 1)
       out += fmt::format(" {} {}", q.name, s.a[at]);
     else
       out += fmt::format(" {} [{}, {}, {}]", q.name, s.a[at], s.a[at + 1], s.a[at + 2]);
@@ -70,7 +72,9 @@ std::string show_step(const Step& s) {
   const char* names[3] = {"x", "y", "z"};
   for (int i = 0; i < 3; ++i)
     if (s.e[size_t(i)]) out += fmt::format(" {} = {}", names[i], expr::to_string(s.e[size_t(i)]));
-  if (s.from != 0 || s.until != kMaxIterations)
+  if (s.period > 0)
+    out += fmt::format(" (iterations {}..{} of every {})", s.from, s.until - 1, s.period);
+  else if (s.from != 0 || s.until != kMaxIterations)
     out += s.until == kMaxIterations ? fmt::format(" (iterations {}..)", s.from)
                                      : fmt::format(" (iterations {}..{})", s.from, s.until - 1);
   return out;
@@ -86,6 +90,7 @@ std::string describe(const Chain& c) {
   else
     out += fmt::format("formula: {} iterations, bailout {}, {}\n", c.iterations, c.bailout,
                        c.julia ? fmt::format("julia c = [{}, {}, {}]", c.c[0], c.c[1], c.c[2]) : "c = the point");
+  if (c.set_radius > 0) out += fmt::format("  the set lies within radius {} (the far field and bounds use it)\n", c.set_radius);
   for (size_t i = 0; i < c.steps.size(); ++i)
     out += fmt::format("  {}{}. {}\n", i, c.repeat_from == int(i) && i ? " (repeat from here)" : "", show_step(c.steps[i]));
   out += "  estimator: " + plan(c).why + "\n";
@@ -112,6 +117,8 @@ size_t intern(Chain c) {
     for (double v : s.a) key += fmt::format(" {:a}", v);
   key += fmt::format(" {:a} {} {} {:a}", c.bailout, int(c.de), c.repeat_from, c.kleinian_size);
   if (c.de == DeChoice::JosKleinian) key += fmt::format(" {:a} {:a} {:a}", c.jos_cap, c.jos_min_dr, c.jos_height);
+  if (c.set_radius > 0) key += fmt::format(" set {:a}", c.set_radius);
+  if (c.bounds_trust > 0) key += fmt::format(" trust {:a}", c.bounds_trust);
   Table& t = table();
   std::lock_guard<std::mutex> g(t.lock);
   auto it = t.by_text.find(key);

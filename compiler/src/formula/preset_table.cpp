@@ -7,6 +7,8 @@ namespace sdfc::formula {
 extern const Preset kMandelbulbPreset, kMandelboxPreset, kMengerPreset, kSierpinskiPreset, kKifsPreset;
 extern const Preset kBulbPower2Preset, kPseudoKleinianPreset, kAmazingSurfPreset, kBoxFoldBulbPow2Preset;
 extern const Preset kXenodreambuiePreset, kEiffieMsltoePreset, kKochPreset;
+extern const Preset kHybridPreset;
+extern const Preset kGeneralizedFoldBoxPreset;
 extern const Preset kAboxMod11Preset, kAmazingSurfMod2Preset, kAmazingSurfMod4Preset, kAboxMod15Preset;
 extern const Preset kMengerMod1Preset, kMengerSmoothPreset, kMenger3Preset, kMengerCrossKifsPreset;
 extern const Preset kJosKleinianPreset;
@@ -17,6 +19,8 @@ const std::vector<const Preset*>& presets() {
       sorted_by_name<Preset>({&kMandelbulbPreset, &kMandelboxPreset, &kMengerPreset, &kSierpinskiPreset, &kKifsPreset,
                               &kBulbPower2Preset, &kPseudoKleinianPreset, &kAmazingSurfPreset, &kBoxFoldBulbPow2Preset,
                               &kXenodreambuiePreset, &kEiffieMsltoePreset, &kKochPreset,
+                              &kHybridPreset,
+                              &kGeneralizedFoldBoxPreset,
                               &kAboxMod11Preset, &kAmazingSurfMod2Preset, &kAmazingSurfMod4Preset, &kAboxMod15Preset,
                               &kMengerMod1Preset, &kMengerSmoothPreset, &kMenger3Preset, &kMengerCrossKifsPreset,
                               &kJosKleinianPreset,

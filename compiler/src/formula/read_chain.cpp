@@ -70,7 +70,7 @@ class ChainReader {
         return;
       } else {
         const StepParam& q = *first;
-        st.a.push_back(r_.number(*value, what, Range::closed(q.lo, q.hi)));
+        st.a.push_back(q.words.empty() ? r_.number(*value, what, Range::closed(q.lo, q.hi)) : word(*value, q, what));
         for (size_t i = 1; i < def->params.size(); ++i) fallback(def->params[i], st, value->loc, what);
       }
     } else {
@@ -82,6 +82,8 @@ class ChainReader {
         std::string key = what + "." + std::string(q.name);
         if (!v) {
           fallback(q, st, value ? value->loc : name->loc, what);
+        } else if (!q.words.empty()) {
+          st.a.push_back(word(*v, q, key));
         } else if (q.width == 1) {
           st.a.push_back(r_.number(*v, key, Range::closed(q.lo, q.hi)));
         } else {
@@ -131,6 +133,20 @@ class ChainReader {
   void fallback(const StepParam& q, Step& st, const SourceLoc& at, const std::string& what) {
     if (q.required) error(at, fmt::format("{}: missing '{}'", what, q.name), "");
     st.a.insert(st.a.end(), q.fallback.begin(), q.fallback.begin() + q.width);
+  }
+
+  // A word-valued setting: the index of the word, or an error with the nearest.
+  double word(const SourceValue& v, const StepParam& q, const std::string& key) {
+    for (size_t i = 0; i < q.words.size(); ++i)
+      if (v.is_scalar() && v.scalar == q.words[i]) return double(i);
+    std::string all;
+    for (auto w : q.words) all += (all.empty() ? "" : ", ") + std::string(w);
+    std::string hint = v.is_scalar() ? did_you_mean(v.scalar, q.words) : "";
+    error(v.loc,
+          v.is_scalar() ? fmt::format("{}: unknown {} '{}'", key, q.name, printable(v.scalar, 80))
+                        : fmt::format("{}: expected one of {}, got {}", key, all, v.kind_name()),
+          hint.empty() ? std::string(q.name) + "s: " + all : hint);
+    return q.fallback[0];
   }
 
   void known_keys(const SourceValue& m, const StepDef& def, const std::string& what) {

@@ -76,7 +76,7 @@ ir::Props props(const ir::Node& n) {
   ir::Props p;
   p.known = true;
   // The set lies inside the bailout ball: an orbit from outside it stops at once.
-  p.bounds = ir::Box3::cube(c.bailout);
+  p.bounds = ir::Box3::cube(c.set_radius > 0 ? c.set_radius : c.bailout);
   // A quaternion Julia chain (q^n + c) lies inside the ball where |q|^n - |q| = |c|,
   // as the built-in julia: does (the bound search then starts from the same box).
   if (c.julia && c.steps.size() == 2 && c.steps[0].def->name == "quaternion" && c.steps[1].def->name == "add_c") {
@@ -115,6 +115,14 @@ reference::OrbitColour orbit_colour(const ir::Node& n, const V3& p, const ir::Tr
   return {o.trap, orbit::smooth_iteration(int(o.iterations), o.r, c.bailout, 2.0, formula::plan(c).log, c.iterations)};
 }
 
+// The bounds search believes the description's half of the estimate; a chain
+// that trusts its estimate more (the hybrid preset, as the hybrid kind) scales it.
+double bounds_distance(const ir::Node& n, const V3& p) {
+  const formula::Chain& c = chain_of(n);
+  const double d = formula::evaluate(c, p).distance;
+  return c.bounds_trust > 0 ? d * c.bounds_trust / 0.5 : d;
+}
+
 // sdfc check prints the chain's own account (explain) instead.
 std::string de_summary(const ir::Node&) { return ""; }
 
@@ -138,6 +146,7 @@ extern const Description Formula{
     .param_count = count_of<FormulaP>(), .lower = lower, .props = props, .call_args = "", .distance = distance,
     .emit = emit, .emit_orbit = emit_orbit, .orbit_colour = orbit_colour, .de_summary = de_summary,
     .bounds_trust = 0.5,  // the bailout ball is loose: passes/fractal_bounds searches with the estimate
+    .bounds_distance = bounds_distance,
     .summary = "a fractal written as a chain of steps, its distance estimate derived from them",
     .docs = k_docs, .explain = explain};
 }

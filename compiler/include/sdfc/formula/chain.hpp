@@ -29,6 +29,7 @@ struct Step {
   std::vector<expr::ExprPtr> partials;
   int from = 0;                      // runs on iterations from <= i < until
   int until = kMaxIterations;
+  int period = 0;                    // > 0: from/until count iterations modulo period (a preset's cycle)
   SourceLoc loc;
 };
 
@@ -66,6 +67,8 @@ struct Chain {
   int repeat_from = 0;  // iterations after the first start at this step
   double kleinian_size = 1;  // de: kleinian's cylinder radius
   double jos_cap = 0.05, jos_min_dr = 1, jos_height = 0;  // de: jos_kleinian's numbers
+  double set_radius = 0;     // > 0: the set lies in this ball (far field and bounds), else in the bailout ball
+  double bounds_trust = 0;   // > 0: the share of the estimate the bounds search believes, else the kind's (half)
   std::string preset;        // the preset it was expanded from, if any
   std::optional<KindNode> builtin;  // set: the preset renders as this built-in node
 };

@@ -28,6 +28,7 @@ struct StepParam {
   std::array<double, 3> fallback;
   bool required = false;
   double lo = -1e6, hi = 1e6;
+  std::vector<std::string_view> words = {};  // a word-valued setting: stored as its index here
 };
 
 // The orbit's state in double for the reference: z, the scalar derivative
