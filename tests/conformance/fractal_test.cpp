@@ -133,6 +133,11 @@ std::vector<Group> groups() {
         {"preset_jos_kleinian_shifted",
          "jos_kleinian: {height: 1.9, shift: 0.073, box_size: [0.9, 1.1, 1.2], spheres: 0, de_cap: 0.28, iterations: 8, bailout: 2.5}", 1.2}},
        6.0},
+      // Amazing IFS: the tglad fold, scale / clamp(r^2), the rotation; without c and with it.
+      {"formula_presets_amazing_ifs",
+       {{"preset_amazing_ifs", "amazing_ifs: {scale: 2, fold_z: 1, iterations: 10}", 1.6},
+        {"preset_amazing_ifs_c", "amazing_ifs: {scale: 1.8, rotation_axis: [1, 0, 1], rotation_angle: 20, add_c: 1, iterations: 10}", 2.2}},
+       6.0},
   };
 }
 

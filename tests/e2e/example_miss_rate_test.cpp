@@ -77,7 +77,7 @@ std::vector<std::string> fractal_examples() {
                         "preset_mandelbulb", "menger_sponge", "sierpinski_preset", "kaleidoscopic_ifs", "pseudo_kleinian",
                         "amazing_surf", "icosa_ifs", "xenodreambuie", "koch", "abox_mod11", "amazing_surf_mod2",
                         "amazing_surf_mod4", "abox_mod15", "menger_mod1", "menger3", "menger_cross_kifs",
-                        "jos_kleinian"})
+                        "jos_kleinian", "amazing_ifs"})
     scenes.push_back(std::filesystem::path(SDFC_SOURCE_DIR) / "examples" / "formulas" / (std::string(f) + ".yaml"));
   for (const auto& p : scenes) {
     ir::Module m = build_module(load_yaml_file(p.string()), p.string());

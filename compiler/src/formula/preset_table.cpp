@@ -9,7 +9,7 @@ extern const Preset kBulbPower2Preset, kPseudoKleinianPreset, kAmazingSurfPreset
 extern const Preset kXenodreambuiePreset, kEiffieMsltoePreset, kKochPreset;
 extern const Preset kAboxMod11Preset, kAmazingSurfMod2Preset, kAmazingSurfMod4Preset, kAboxMod15Preset;
 extern const Preset kMengerMod1Preset, kMengerSmoothPreset, kMenger3Preset, kMengerCrossKifsPreset;
-extern const Preset kJosKleinianPreset;
+extern const Preset kJosKleinianPreset, kAmazingIfsPreset;
 
 const std::vector<const Preset*>& presets() {
   static const std::vector<const Preset*> all =
@@ -18,7 +18,7 @@ const std::vector<const Preset*>& presets() {
                               &kXenodreambuiePreset, &kEiffieMsltoePreset, &kKochPreset,
                               &kAboxMod11Preset, &kAmazingSurfMod2Preset, &kAmazingSurfMod4Preset, &kAboxMod15Preset,
                               &kMengerMod1Preset, &kMengerSmoothPreset, &kMenger3Preset, &kMengerCrossKifsPreset,
-                              &kJosKleinianPreset});
+                              &kJosKleinianPreset, &kAmazingIfsPreset});
   return all;
 }
 
