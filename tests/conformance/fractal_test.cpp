@@ -159,6 +159,11 @@ std::vector<Group> groups() {
          2.6},
         {"chain_polyhedral_prism", "formula: {iterations: 10, iterate: [{polyhedral_fold: pentagonal_prism}, sphere_fold, {scale: 2}, add_c]}", 2.6}},
        7.0},
+      // Amazing IFS: the tglad fold, scale / clamp(r^2), the rotation; without c and with it.
+      {"formula_presets_amazing_ifs",
+       {{"preset_amazing_ifs", "amazing_ifs: {scale: 2, fold_z: 1, iterations: 10}", 1.6},
+        {"preset_amazing_ifs_c", "amazing_ifs: {scale: 1.8, rotation_axis: [1, 0, 1], rotation_angle: 20, add_c: 1, iterations: 10}", 2.2}},
+       6.0},
   };
 }
 

@@ -1,6 +1,7 @@
 // Presets against Mandelbulber's own iteration, transcribed here in double
-// from its formula source (Mandelbulber 2.20, formula/opencl/NAME.cl) with
-// its loop (bailout after each iteration) and its distance estimate; the
+// from its formula source (Mandelbulber 2.20's formula/opencl/NAME.cl, or upstream's
+// current source for formulas 2.20 lacks) with its loop (bailout after each
+// iteration) and its distance estimate; the
 // preset's chain is evaluated by the chain's double reference.
 #include <gtest/gtest.h>
 
@@ -60,6 +61,32 @@ struct Jos {
   }
 };
 
+// AmazingIfsIteration (upstream's 2021 form; 2.20 lacks it) with its
+// defaults' switches: the tglad fold on x and y (z when fold_z), the scale
+// over clamp(r^2, min_r2, 1), no rotation; the linear estimate r / |DE|.
+struct AmazingIfs {
+  double scale = 1, min_r2 = 0.25;  // scale1, minR2p25
+  V3 fold{0.5, 0.5, 0.5};           // additionConstant0555
+  bool fold_z = false;              // functionEnabledCzFalse
+  int n = 12;
+  double bailout = 100;
+
+  double distance(V3 z) const {
+    double de = 1, r = 0;
+    for (int i = 0; i < n; ++i) {
+      for (int k = 0; k < (fold_z ? 3 : 2); ++k) z[k] = std::fabs(z[k] + fold[k]) - std::fabs(z[k] - fold[k]) - z[k];
+      double rr = z[0] * z[0] + z[1] * z[1] + z[2] * z[2];
+      double dividend = rr < min_r2 ? min_r2 : std::min(rr, 1.0);
+      double use = (0 + scale) / dividend;  // actualScaleA starts at 0
+      for (double& v : z) v *= use;
+      de = de * std::fabs(use) + 0;  // analyticDE offset0
+      r = std::sqrt(z[0] * z[0] + z[1] * z[1] + z[2] * z[2]);
+      if (r > bailout) break;
+    }
+    return r / std::fabs(de);
+  }
+};
+
 // The share of random points (inside the bailout ball, which cuts the
 // chain's set) where the preset's
 // chain gives Mandelbulber's distance to 1e-9 relative; the rest sit where
@@ -94,6 +121,16 @@ TEST(FormulaTranscription, JosKleinianIsMandelbulbersIterationAndEstimate) {
   EXPECT_GT(agreement(chain_of("{jos_kleinian: {height: 1.9, shift: -0.2, box_size: [0.9, 1.1, 1.2], spheres: 0, de_cap: 0.28,"
                                " de_min_dr: 0.5, iterations: 20, bailout: 6}}"),
                       other, 2.5),
+            0.99);
+}
+
+TEST(FormulaTranscription, AmazingIfsIsMandelbulbersIterationAndEstimate) {
+  AmazingIfs mb;
+  EXPECT_GT(agreement(chain_of("{amazing_ifs: {iterations: 12}}"), mb, 2.0), 0.99);
+  AmazingIfs other;
+  other.scale = 2.1, other.min_r2 = 0.3, other.fold = {0.7, 0.6, 0.45}, other.fold_z = true, other.n = 15;
+  EXPECT_GT(agreement(chain_of("{amazing_ifs: {scale: 2.1, min_r2: 0.3, fold: [0.7, 0.6, 0.45], fold_z: 1, iterations: 15}}"),
+                      other, 3.0),
             0.99);
 }
 

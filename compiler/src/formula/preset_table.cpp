@@ -13,6 +13,7 @@ extern const Preset kAboxMod11Preset, kAmazingSurfMod2Preset, kAmazingSurfMod4Pr
 extern const Preset kMengerMod1Preset, kMengerSmoothPreset, kMenger3Preset, kMengerCrossKifsPreset;
 extern const Preset kJosKleinianPreset;
 extern const Preset kJuliaPreset, kQuaternionPreset, kHypercomplexPreset, kAexionPreset;
+extern const Preset kAmazingIfsPreset;
 
 const std::vector<const Preset*>& presets() {
   static const std::vector<const Preset*> all =
@@ -24,7 +25,8 @@ const std::vector<const Preset*>& presets() {
                               &kAboxMod11Preset, &kAmazingSurfMod2Preset, &kAmazingSurfMod4Preset, &kAboxMod15Preset,
                               &kMengerMod1Preset, &kMengerSmoothPreset, &kMenger3Preset, &kMengerCrossKifsPreset,
                               &kJosKleinianPreset,
-                              &kJuliaPreset, &kQuaternionPreset, &kHypercomplexPreset, &kAexionPreset});
+                              &kJuliaPreset, &kQuaternionPreset, &kHypercomplexPreset, &kAexionPreset,
+                              &kAmazingIfsPreset});
   return all;
 }
 
