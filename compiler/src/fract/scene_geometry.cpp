@@ -60,7 +60,9 @@ auto with_input(const Slot& s, const File& file, const Params& main, ImportConte
   if (!f || !f->write || (hybrid && !f->chain))
     fail(s.loc, formula_label(s.id) + " is not supported yet" + (hybrid ? " (in a hybrid)" : ""),
          "sdfc imports the Mandelbulb (2), Mandelbulb - Power 2 (3), the Mandelbox (8), the Menger sponge (7), the "
-         "Kaleidoscopic IFS (10), Xenodreambuie (11), Menger - Mod 1 (61) and the quaternion in julia mode (5)");
+         "Kaleidoscopic IFS (10), Xenodreambuie (11), box_fold_bulb_pow2 (16), Menger - Mod 1 (61), eiffie_msltoe (70), "
+         "Menger - Cross KIFS (98), pseudoKleinian2 (103), Menger - Smooth (113), Abox - Mod 11 (119), Amazing Surf - "
+         "Mod 2 (132) and the quaternion in julia mode (5); in a hybrid 2, 3, 7, 8, 10, 16, 119 and 132");
   if (w.mirror_y && !f->mirror_symmetric)
     fail(main.loc("legacy_coordinate_system"), formula_label(s.id) + " in the legacy coordinate system is not supported yet");
   Params fractal(file.fractal[size_t(s.n - 1)], true);
