@@ -93,6 +93,15 @@ TEST(FractPresets, BoxVariantsKleinianAndBoxFoldBulb) {
                  "formula 'box_fold_bulb_pow2' (id 16) with boxfold_bulbpow2_z_factor = 0");
 }
 
+// fractal_rotation turns the point before the formula: the shape turns back,
+// by Mᵀ of SetRotation2's Rz·Ry·Rx as one axis and angle.
+TEST(FractPresets, FractalRotationTurnsTheShapeBack) {
+  expect_yaml(fract("formula_1 7;\nfractal_rotation 0 36 0;\n"), {"rotate: {axis: [0, -1, 0], degrees: 36}"});
+  expect_yaml(fract("formula_1 7;\nfractal_rotation 90 90 0;\n"), {"rotate: {axis: [-0.57735", "degrees: 120"});
+  expect_refused(fract("formula_1 7;\nlimits_enabled true;\nfractal_rotation 0 0 10;\n"),
+                 "rotating the fractal with limits_enabled");
+}
+
 // In a hybrid the box formulas are chain steps: the same folds as their presets.
 TEST(FractPresets, BoxVariantsAsHybridSteps) {
   const std::string hybrid = "hybrid_fractal_enable true;\nformula_2 8;\nN 12;\n";
