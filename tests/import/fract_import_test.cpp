@@ -95,7 +95,9 @@ TEST(FractImport, UnsupportedFormulasAreErrorsNamingThemAndTheirIds) {
   EXPECT_NE(error_of(fract("2.20", "formula_1 8;\n", "mandelbox_folding_value 3;\n"))
                 .find("formula 'Mandelbox' (id 8) with mandelbox_folding_value"),
             std::string::npos);
-  EXPECT_NE(error_of(fract("2.20", "formula_1 7;\nfractal_rotation 0 0 10;\n")).find("rotating the fractal"), std::string::npos);
+  EXPECT_NE(error_of(fract("2.20", "formula_1 7;\nboolean_operators true;\nfractal_rotation 0 0 10;\n"))
+                .find("rotating the fractal in boolean mode"),
+            std::string::npos);
   // The presets' writers refuse the options their presets leave out.
   EXPECT_NE(error_of(fract("2.20", "formula_1 11;\n", "alpha_angle_offset 10;\n"))
                 .find("formula 'Xenodreambuie' (id 11) with alpha_angle_offset = 10"),

@@ -158,9 +158,10 @@ TEST_F(MandelbulberOracle, ChainFormulaSilhouettesAgree) {
   std::printf("hybrid: masks agree on %.2f %% of the pixels (the Mandelbox alone: %.2f %%)\n", 100 * a, 100 * box_alone);
 }
 
-// The formulas imported as presets: Xenodreambuie (id 11), Menger - Mod 1
-// (id 61) and the 4-D ones (4, 5, 19), at their defaults and with other values (a julia constant and
-// power 5; multipliers that take the chain off the plain Menger fold, and an offset).
+// The formulas imported as presets, each at its defaults and with other
+// values: Xenodreambuie (id 11: a julia constant and power 5), Menger - Mod 1
+// (id 61: multipliers that take the chain off the plain Menger fold, and an
+// offset), the 4-D ones (4, 5, 19) and the ids below.
 TEST_F(MandelbulberOracle, PresetFormulaSilhouettesAgree) {
   auto file = [&](const char* name, const std::string& main, const std::string& fractal) {
     return dir.write(name, "# Mandelbulber settings file\n# version 2.20\n# only modified parameters\n[main_parameters]\n" +
@@ -174,7 +175,39 @@ TEST_F(MandelbulberOracle, PresetFormulaSilhouettesAgree) {
              "transf_constant_multiplier_111 1 0,85 0,9;\ntransf_addition_constant 0,15 0 0;\n"),
         // the 4-D formulas: Hypercomplex (4), Quaternion (5) in its Mandelbrot form, Aexion (19)
         file("hypercomplex.fract", "formula_1 4;\nN 10;\n", ""), file("quaternion.fract", "formula_1 5;\nN 10;\n", ""),
-        file("aexion_cadd.fract", "formula_1 19;\nN 10;\n", "cadd 0,2;\n")}) {
+        file("aexion_cadd.fract", "formula_1 19;\nN 10;\n", "cadd 0,2;\n"),
+        // Eiffie's Msltoe (70): defaults; julia, scale and offset.
+        file("eiffie.fract", "formula_1 70;\nN 10;\n", ""),
+        file("eiffie_julia.fract", "formula_1 70;\nN 10;\njulia_mode true;\njulia_c 0,3 -0,4 0,2;\n",
+             "transf_scale 1,2;\ntransf_offset 0,1;\n"),
+        // Menger Smooth (113), Menger Cross KIFS (98).
+        file("menger_smooth.fract", "formula_1 113;\nN 12;\n", ""),
+        file("menger_smooth_soft.fract", "formula_1 113;\nN 12;\n", "transf_offset_0005 0,02;\ntransf_offset_1105 1 0,9 0,6;\n"),
+        file("cross_kifs.fract", "formula_1 98;\nN 12;\n", ""),
+        file("cross_kifs_scaled.fract", "formula_1 98;\nN 12;\n", "transf_scale_3 2,8;\n"),
+        // ABox Mod 11 (119) from farther away; radii, fold, offset and a turn about each axis.
+        file("abox11.fract", "formula_1 119;\nN 12;\ncamera 12 -24 8;\n", ""),
+        file("abox11_turned.fract", "formula_1 119;\nN 12;\ncamera 12 -24 8;\n",
+             "mandelbox_scale 2,2;\ntransf_addition_constant_111 1 0,9 1;\ntransf_minR2_p25 0,2;\n"
+             "transf_addition_constant 0,1 0 0;\ntransf_rotation_enabled true;\ntransf_rotation 0 0 20;\n"),
+        file("abox11_turned_x.fract", "formula_1 119;\nN 12;\ncamera 12 -24 8;\n",
+             "transf_rotation_enabled true;\ntransf_rotation 20 0 0;\n"),
+        file("abox11_turned_y.fract", "formula_1 119;\nN 12;\ncamera 12 -24 8;\n",
+             "transf_rotation_enabled true;\ntransf_rotation 0 25 0;\n"),
+        // Amazing Surf Mod 2 (132): defaults; scale; offset and max r².
+        file("surf2.fract", "formula_1 132;\nN 12;\n", ""),
+        file("surf2_scaled.fract", "formula_1 132;\nN 12;\n", "mandelbox_scale 1,8;\n"),
+        file("surf2_offset.fract", "formula_1 132;\nN 12;\n", "transf_addition_constant 0,1 0 0,05;\ntransf_maxR2_1 1,2;\n"),
+        // The pseudo-Kleinian (103), which fills space: the view ends at 7.
+        file("kleinian.fract", "formula_1 103;\nN 12;\nview_distance_max 7;\n", ""),
+        file("kleinian_box.fract", "formula_1 103;\nN 12;\nview_distance_max 7;\n",
+             "transf_addition_constant_0777 0,8 0,7 0,6;\ntransf_minimum_radius_05 0,6;\ntransf_addition_constant 0 0,1 0;\n"),
+        // box_fold_bulb_pow2 (16): its defaults (fold 2, z 5) and fold 1.5, z 2.
+        file("box_bulb.fract", "formula_1 16;\nN 12;\ncamera 6 -12 4;\n", ""),
+        // fractal_rotation on the Menger sponge (the opposite turn agrees on 90 %).
+        file("menger_turned.fract", "formula_1 7;\nN 12;\nfractal_rotation 20 30 10;\n", ""),
+        file("box_bulb_z2.fract", "formula_1 16;\nN 12;\ncamera 6 -12 4;\n",
+             "boxfold_bulbpow2_folding_factor 1,5;\nboxfold_bulbpow2_z_factor 2;\n")}) {
     double a = agreement(mandelbulber_mask(f, dir), sdfc_mask(f, "", dir));
     EXPECT_GE(a, 0.97) << f;
     std::printf("%s: masks agree on %.2f %% of the pixels\n", f.c_str(), 100 * a);

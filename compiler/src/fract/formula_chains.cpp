@@ -36,6 +36,16 @@ std::string rotation_steps(const Vec3& degrees, bool mirror) {
   return s;
 }
 
+// CRotationMatrix::SetRotation2 (transf_rotation): Rz(r.z)·Ry(r.y)·Rx(r.x),
+// so z turns about x first.
+std::string rotation2_steps(const Vec3& degrees) {
+  std::string s;
+  const char* axes[3] = {"[1, 0, 0]", "[0, 1, 0]", "[0, 0, 1]"};
+  for (size_t i = 0; i < 3; ++i)
+    if (degrees[i] != 0) s += fmt::format("{{rotate: {{axis: {}, angle: {}}}}}, ", axes[i], num(degrees[i]));
+  return s;
+}
+
 // compute_fractal.cl adds c·fractal_constant_factor (julia_c times it in
 // julia mode, which the formula's julia constant carries); `adds` says
 // whether this formula adds c at all.

@@ -100,7 +100,14 @@ constexpr Formula kMapped[] = {
     {10, "Kaleidoscopic IFS", 10, ifs, ifs_chain, true},  // its writer mirrors its vectors and rotations
     {11, "Xenodreambuie", 10, xenodreambuie, nullptr, true},
     {19, "Aexion", 10, aexion, nullptr, true},
+    {16, "box_fold_bulb_pow2", 10000, box_fold_bulb_pow2, box_fold_bulb_pow2_chain, true},
     {61, "Menger - Mod 1", 10, menger_mod1, nullptr, true},
+    {70, "eiffie_msltoe", 10, eiffie_msltoe, nullptr, false},
+    {98, "Menger - Cross KIFS", 10, menger_cross_kifs, nullptr, true},  // |y| and |z| first
+    {103, "pseudoKleinian2", 100, pseudo_kleinian, nullptr, true},      // its writer mirrors the offset
+    {113, "Menger - Smooth", 10, menger_smooth, nullptr, true},         // smooth |x|, |y|, |z| first
+    {119, "Abox - Mod 11", 100, abox_mod11, abox_mod11_chain, false},
+    {132, "Amazing Surf - Mod 2", 100, amazing_surf_mod2, amazing_surf_mod2_chain, false},
 };
 
 }  // namespace

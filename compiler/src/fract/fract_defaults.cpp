@@ -73,6 +73,21 @@ constexpr Row kFractal[] = {
     {"transf_constant_multiplier_111", "1 1 1"}, {"transf_addition_constant", "0 0 0"}, {"transf_rotation_enabled", "0"},
     {"transf_function_enabledx_false", "0"}, {"transf_function_enabled_false", "0"},
     {"cadd", "-1.3"},  // aexion
+    // the presets' keys (formula_presets*.cpp)
+    {"transf_scale", "1"}, {"transf_scale_1", "1"}, {"transf_offset", "0"}, {"transf_addCpixel_enabled_false", "0"},
+    {"transf_function_enabled", "1"}, {"transf_function_enabledz_false", "0"}, {"transf_function_enabledP_false", "0"},
+    {"transf_function_enabledR_false", "0"}, {"transf_offset_1105", "1 1 0.5"}, {"transf_offset_0005", "0.005"},
+    {"transf_function_enabledSw_false", "0"}, {"mandelbox_vary_scale_vary", "0"}, {"transf_minR2_p25", "0.25"},
+    {"transf_maxR2_1", "1"}, {"transf_addition_constant_111", "1 1 1"}, {"transf_function_enabledy_false", "0"},
+    {"transf_rotation", "0 0 0"}, {"transf_scaleG_1", "1"}, {"transf_function_enabledAx", "1"},
+    {"transf_function_enabledAy", "1"}, {"transf_function_enabledAy_false", "0"},
+    {"transf_function_enabledAz_false", "0"}, {"transf_function_enabledCz_false", "0"},
+    {"transf_function_enabledCx_false", "0"}, {"transf_function_enabledBz_false", "0"},
+    {"transf_function_enabledF_false", "0"}, {"transf_function_enabledAx_false", "0"},
+    {"transf_sphere_inversion_enabled_false", "0"}, {"transf_function_enabledBy_false", "0"},
+    {"transf_function_enabledBx_false", "0"}, {"transf_addition_constant_0777", "0.7 0.7 0.7"},
+    {"transf_minimum_radius_05", "0.5"}, {"analyticDE_tweak_005", "0.05"}, {"analyticDE_scale_1", "1"},
+    {"boxfold_bulbpow2_folding_factor", "2"}, {"boxfold_bulbpow2_z_factor", "5"},
 };
 
 template <size_t N>

@@ -6,6 +6,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 
 #include "formula_table.hpp"
 #include "formula_writers.hpp"
@@ -41,7 +43,10 @@ void refuse_unmapped_shape_keys(const Params& main) {
     fail(main.loc(key), fmt::format("{} is not supported yet ({} = {})", what, key, printable(main.section().entries.at(key).value, 80)));
   };
   auto vec_set = [&](const char* key) { return main.given(key) && main.vec3(key) != Vec3{0, 0, 0}; };
-  if (vec_set("fractal_rotation")) refuse("fractal_rotation", "rotating the fractal");
+  if (vec_set("fractal_rotation") && main.boolean("boolean_operators"))
+    refuse("fractal_rotation", "rotating the fractal in boolean mode");
+  if (vec_set("fractal_rotation") && main.boolean("limits_enabled"))
+    refuse("fractal_rotation", "rotating the fractal with limits_enabled");
   if (vec_set("repeat")) refuse("repeat", "repeating the fractal");
   if (main.given("interior_mode") && main.boolean("interior_mode")) refuse("interior_mode", "the interior mode");
   if (main.given("iteration_threshold_mode") && main.boolean("iteration_threshold_mode"))
@@ -60,7 +65,9 @@ auto with_input(const Slot& s, const File& file, const Params& main, ImportConte
   if (!f || !f->write || (hybrid && !f->chain))
     fail(s.loc, formula_label(s.id) + " is not supported yet" + (hybrid ? " (in a hybrid)" : ""),
          "sdfc imports the Mandelbulb (2), Mandelbulb - Power 2 (3), the Mandelbox (8), the Menger sponge (7), the "
-         "Kaleidoscopic IFS (10), Xenodreambuie (11), Menger - Mod 1 (61) and the quaternion in julia mode (5)");
+         "Kaleidoscopic IFS (10), Xenodreambuie (11), box_fold_bulb_pow2 (16), Menger - Mod 1 (61), eiffie_msltoe (70), "
+         "Menger - Cross KIFS (98), pseudoKleinian2 (103), Menger - Smooth (113), Abox - Mod 11 (119), Amazing Surf - "
+         "Mod 2 (132) and the quaternion in julia mode (5); in a hybrid 2, 3, 7, 8, 10, 16, 119 and 132");
   if (w.mirror_y && !f->mirror_symmetric)
     fail(main.loc("legacy_coordinate_system"), formula_label(s.id) + " in the legacy coordinate system is not supported yet");
   Params fractal(file.fractal[size_t(s.n - 1)], true);
@@ -116,6 +123,47 @@ Node with_limits(Node n, const Params& main, const ImportContext& w) {
   return Node{"intersection", "limits_enabled: the fractal inside limit_min ... limit_max", {}, {}, {n, box}};
 }
 
+// fractal_rotation: Mandelbulber iterates M·p, M = Rz(r.z)·Ry(r.y)·Rx(r.x)
+// (CRotationMatrix::SetRotation2), so the shape turns by M⁻¹ = Mᵀ: that
+// as one axis and angle (in the scene's coordinates, mirrored when legacy).
+Node with_rotation(Node n, const Params& main, const ImportContext& w) {
+  Vec3 r = main.vec3("fractal_rotation");
+  if (r == Vec3{0, 0, 0}) return n;
+  using M3 = std::array<std::array<double, 3>, 3>;
+  auto mul = [](const M3& a, const M3& b) {
+    M3 c{};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        for (int k = 0; k < 3; ++k) c[i][j] += a[i][k] * b[k][j];
+    return c;
+  };
+  auto turn = [](int axis, double degrees) {  // right-handed, as CRotationMatrix::RotateX/Y/Z
+    double a = degrees * M_PI / 180, cs = std::cos(a), sn = std::sin(a);
+    int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    M3 m{};
+    m[axis][axis] = 1;
+    m[u][u] = cs, m[u][v] = -sn, m[v][u] = sn, m[v][v] = cs;
+    return m;
+  };
+  M3 m = mul(mul(turn(2, r[2]), turn(1, r[1])), turn(0, r[0])), t{};
+  double sy = w.mirror_y ? -1 : 1;  // S·Mᵀ·S with S = diag(1, -1, 1)
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) t[i][j] = m[j][i] * (i == 1 ? sy : 1) * (j == 1 ? sy : 1);
+  double angle = std::acos(std::clamp((t[0][0] + t[1][1] + t[2][2] - 1) / 2, -1.0, 1.0));
+  Vec3 axis{t[2][1] - t[1][2], t[0][2] - t[2][0], t[1][0] - t[0][1]};
+  if (std::sin(angle) < 1e-9) {  // a half turn: the axis from the diagonal (t = 2aaᵀ − I)
+    size_t k = t[0][0] >= t[1][1] && t[0][0] >= t[2][2] ? 0 : t[1][1] >= t[2][2] ? 1 : 2;
+    for (size_t i = 0; i < 3; ++i) axis[i] = (t[i][k] + (i == k)) / 2;
+  }
+  double len = std::sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
+  if (!(len > 0) || angle < 1e-12) return n;
+  auto tidy = [](double v) { return std::round(v * 1e12) / 1e12; };  // 120, not 119.99999999999999
+  for (double& a : axis) a = tidy(a / len);
+  n.modifiers.push_back({"rotate", fmt::format("{{axis: {}, degrees: {}}}", vec(axis), num(tidy(angle * 180 / M_PI))),
+                         "fractal_rotation: Mandelbulber turns the point by it, so the shape turns back"});
+  return n;
+}
+
 }  // namespace
 
 Node import_geometry(const File& file, const Params& main, ImportContext& w) {
@@ -128,8 +176,8 @@ Node import_geometry(const File& file, const Params& main, ImportContext& w) {
     if (slots[0].n != 1) fail(main.loc("formula_1"), "formula_1 is 0 (none) and neither hybrid nor boolean mode is on");
     slots.resize(1);
   }
-  if (!boolean_mode && hybrid && slots.size() > 1) return with_limits(hybrid_node(slots, file, main, w), main, w);
-  if (!boolean_mode) return with_limits(formula_node(slots[0], file, main, w), main, w);
+  if (!boolean_mode && hybrid && slots.size() > 1) return with_limits(with_rotation(hybrid_node(slots, file, main, w), main, w), main, w);
+  if (!boolean_mode) return with_limits(with_rotation(formula_node(slots[0], file, main, w), main, w), main, w);
 
   Node root;
   for (const Slot& s : slots) {
