@@ -168,9 +168,9 @@ TEST(FractCommands, ImportCheckAndRenderWithSet) {
   // Known by its first line, whatever its name.
   std::string noext = dir.write("scene", fract("2.20", "formula_1 7;\nN 5;\n"));
   EXPECT_EQ(run_sdfc("check " + noext).code, 0);
-  test::RunResult bad = run_sdfc("check " + dir.write("bad.fract", fract("2.20", "formula_1 4;\n")));
+  test::RunResult bad = run_sdfc("check " + dir.write("bad.fract", fract("2.20", "formula_1 6;\n")));
   EXPECT_EQ(bad.code, 1);
-  EXPECT_TRUE(has(bad.err, "bad.fract:5:11: error: formula 'Hypercomplex' (id 4) is not supported yet")) << bad.err;
+  EXPECT_TRUE(has(bad.err, "bad.fract:5:11: error: formula 'minusFastTrig' (id 6) is not supported yet")) << bad.err;
   // The input is never the output.
   EXPECT_NE(run_sdfc("import " + src + " -o " + src).code, 0);
   EXPECT_TRUE(has(test::read_text(src), "formula_1 7;"));
