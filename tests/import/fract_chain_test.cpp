@@ -9,6 +9,7 @@
 #include <random>
 
 #include "sdfc/compile.hpp"
+#include "fract_text.hpp"
 #include "sdfc/fract/import.hpp"
 #include "sdfc/reference/evaluator.hpp"
 #include "sdfc/source/yaml_loader.hpp"
@@ -16,23 +17,11 @@
 namespace sdfc::fract {
 namespace {
 
-std::string fract(const std::string& main, const std::string& fractal1 = "", const std::string& fractal2 = "") {
-  return "# Mandelbulber settings file\n# version 2.20\n# only modified parameters\n[main_parameters]\n" + main +
-         "[fractal_1]\n" + fractal1 + "[fractal_2]\n" + fractal2;
-}
-
-Imported imported(const std::string& text) { return import_scene(parse_text(text, "t.fract")); }
+using fract_text::error_of;
+using fract_text::fract;
+using fract_text::imported;
 
 ir::Module module_of(const std::string& yaml) { return build_module(load_yaml_text(yaml, "imported"), "imported"); }
-
-std::string error_of(const std::string& text) {
-  try {
-    imported(text);
-  } catch (const SceneError& e) {
-    return e.diagnostics().at(0).message;
-  }
-  return "no error";
-}
 
 bool has(const std::string& yaml, const std::string& text) { return yaml.find(text) != std::string::npos; }
 

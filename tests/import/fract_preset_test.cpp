@@ -6,27 +6,16 @@
 #include <gtest/gtest.h>
 
 #include "sdfc/compile.hpp"
+#include "fract_text.hpp"
 #include "sdfc/fract/import.hpp"
 #include "sdfc/source/yaml_loader.hpp"
 
 namespace sdfc::fract {
 namespace {
 
-std::string fract(const std::string& main, const std::string& fractal1 = "", const std::string& fractal2 = "") {
-  return "# Mandelbulber settings file\n# version 2.20\n# only modified parameters\n[main_parameters]\n" + main +
-         "[fractal_1]\n" + fractal1 + "[fractal_2]\n" + fractal2;
-}
-
-Imported imported(const std::string& text) { return import_scene(parse_text(text, "t.fract")); }
-
-std::string error_of(const std::string& text) {
-  try {
-    imported(text);
-  } catch (const SceneError& e) {
-    return e.diagnostics().at(0).message;
-  }
-  return "no error";
-}
+using fract_text::error_of;
+using fract_text::fract;
+using fract_text::imported;
 
 // The YAML has every line of `want` and builds.
 void expect_yaml(const std::string& file, std::initializer_list<const char*> want) {
