@@ -43,10 +43,10 @@ ProbeCheck probe_and_compare(const ir::Module& m, const EvalConfig& cfg, std::ve
     double got = pc.got.d[i];
     double err = std::fabs(got - ref);
     double allowed = tol.allowed(ref);
-    if (!(err <= allowed))  // also catches NaN
+    if (tol.sign_only(ref) ? !(got < 0) : !(err <= allowed))  // also catches NaN
       note(bad_d, fmt::format("  distance at {}: reference {:.10g}, kernel {:.10g} (|diff| {:.3g} > {:.3g})",
                               pt(pc.points[i]), ref, got, err, allowed));
-    else
+    else if (!tol.sign_only(ref))
       worst = std::max(worst, err / allowed);
     if (!same_bits(pc.got.d[i], pc.got.d_mat[i]))
       note(bad_dm, fmt::format("  scene_dist {:.10g} != scene_dist_mat {:.10g} at {}", pc.got.d[i],

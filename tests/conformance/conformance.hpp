@@ -50,6 +50,10 @@ struct Tolerance {
   // estimators whose interior value is ill-conditioned; < 0: same as outside.
   double inside_abs = -1;
   double inside_rel = 0;
+  // Inside beyond `abs` only the sign must agree (a superattracting orbit's
+  // Jacobian, Newton's method near a root, is a cancellation there).
+  bool inside_sign = false;
+  bool sign_only(double ref) const { return inside_sign && ref < -abs; }
   double allowed(double ref) const {
     if (ref < 0 && inside_abs >= 0) return inside_abs + inside_rel * std::fabs(ref);
     return abs + rel * std::fabs(ref);

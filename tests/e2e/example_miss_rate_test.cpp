@@ -79,7 +79,7 @@ std::vector<std::string> fractal_examples() {
                         "amazing_surf_mod4", "abox_mod15", "menger_mod1", "menger3", "menger_cross_kifs",
                         "jos_kleinian", "julia_preset",
                         "quaternion", "hypercomplex", "aexion",
-                        "hybrid_preset", "generalized_fold_box", "amazing_ifs"})
+                        "hybrid_preset", "generalized_fold_box", "amazing_ifs", "newton_pow3"})
     scenes.push_back(std::filesystem::path(SDFC_SOURCE_DIR) / "examples" / "formulas" / (std::string(f) + ".yaml"));
   for (const auto& p : scenes) {
     ir::Module m = build_module(load_yaml_file(p.string()), p.string());

@@ -55,6 +55,10 @@ std::vector<Step> cases() {
     } else if (d->name == "quaternion") {
       v.push_back(make(*d, {2}));
       v.push_back(make(*d, {3}));
+    } else if (d->name == "triplex_newton") {
+      v.push_back(make(*d));
+      v.push_back(make(*d, {-0.8, 0.3, 0.2, 1.1}));
+      v.push_back(make(*d, {0, 0, 0.5, 1}));  // c on the z axis
     } else if (d->name == "rotate") {
       v.push_back(make(*d, {1, 0, 1, 30}));
     } else {

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <random>
 #include <string>
+#include <utility>
 
 #include "scene_text.hpp"
 #include "sdfc/formula/chain.hpp"
@@ -87,6 +88,57 @@ struct AmazingIfs {
   }
 };
 
+// NewtonPow3's FormulaCode (upstream's 2020 form; 2.20 lacks it) with its
+// defaults' switches, in Mandelbulber's loop (aux.r is |z| before each
+// iteration). Its estimate multiplies DE by 2 r per iteration, a guess the
+// preset replaces by the Newton step's Jacobian, so the orbit is compared:
+// |z| at the end and the iteration it stopped at.
+struct NewtonPow3 {
+  V3 c{-1, 0, 0}, solution{1, 0, 0};  // scaleNeg1, offsetA0, offsetB0; offset100
+  double scale = 1, a1 = 1, b1 = 1;   // scale1, scaleA1, scaleB1
+  int n = 12;
+  double bailout = 10;
+
+  std::pair<double, int> orbit(V3 z) const {
+    double r = std::sqrt(z[0] * z[0] + z[1] * z[1] + z[2] * z[2]);
+    int i = 0;
+    while (i < n && r < bailout) {
+      double sq = a1 / (r * r);
+      z = {z[0] * sq + solution[0], -z[1] * sq + solution[1], -z[2] * sq + solution[2]};
+      V3 tp{z[0] * z[0], z[1] * z[1], z[2] * z[2]};
+      sq = tp[0] + tp[1] + tp[2];
+      sq = 1.0 / (3.0 * scale * sq * sq);
+      double rxy = tp[0] + tp[1], h1 = 1.0 - tp[2] / rxy;
+      double tx = h1 * (tp[0] - tp[1]) * sq, ty = -2.0 * h1 * z[0] * z[1] * sq, tz = 2.0 * z[2] * std::sqrt(rxy) * sq;
+      double r2 = std::sqrt(tx * tx + ty * ty), r2c = std::sqrt(c[0] * c[0] + c[1] * c[1]);
+      double h = 1.0 - c[2] * tz / (r2 * r2c);
+      tp = {(c[0] * tx - c[1] * ty) * h, (c[1] * tx + c[0] * ty) * h, r2c * tz + r2 * c[2]};
+      for (int k = 0; k < 3; ++k) z[k] = 0.6666666666 * z[k] - tp[k];
+      tp = {z[0] - solution[0], z[1], z[2]};
+      sq = b1 / (tp[0] * tp[0] + tp[1] * tp[1] + tp[2] * tp[2]);
+      z = {tp[0] * sq, -tp[1] * sq, -tp[2] * sq};
+      r = std::sqrt(z[0] * z[0] + z[1] * z[1] + z[2] * z[2]);
+      ++i;
+    }
+    return {r, i};
+  }
+};
+
+// The share of random points where the preset's chain ends its orbit where
+// Mandelbulber's does: the same iteration, |z| to 1e-9 relative.
+double orbit_agreement(const formula::Chain& c, const NewtonPow3& mb, double half) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-half, half);
+  int same = 0;
+  for (int i = 0; i < 4000; ++i) {
+    V3 p{u(rng), u(rng), u(rng)};
+    auto [r, n] = mb.orbit(p);
+    formula::OrbitResult got = formula::evaluate(c, p);
+    same += int(got.iterations) == n && std::fabs(got.r - r) <= 1e-9 * std::max(1.0, r);
+  }
+  return same / 4000.0;
+}
+
 // The share of random points (inside the bailout ball, which cuts the
 // chain's set) where the preset's
 // chain gives Mandelbulber's distance to 1e-9 relative; the rest sit where
@@ -131,6 +183,18 @@ TEST(FormulaTranscription, AmazingIfsIsMandelbulbersIterationAndEstimate) {
   other.scale = 2.1, other.min_r2 = 0.3, other.fold = {0.7, 0.6, 0.45}, other.fold_z = true, other.n = 15;
   EXPECT_GT(agreement(chain_of("{amazing_ifs: {scale: 2.1, min_r2: 0.3, fold: [0.7, 0.6, 0.45], fold_z: 1, iterations: 15}}"),
                       other, 3.0),
+            0.99);
+}
+
+TEST(FormulaTranscription, NewtonPow3IsMandelbulbersIteration) {
+  NewtonPow3 mb;
+  EXPECT_GT(orbit_agreement(chain_of("{newton_pow3: {iterations: 12}}"), mb, 2.0), 0.99);
+  NewtonPow3 other;
+  other.c = {-0.8, 0.3, 0.2}, other.solution = {1.2, 0, 0}, other.scale = 1.1, other.a1 = 0.9, other.b1 = 1.3;
+  other.n = 9, other.bailout = 20;
+  EXPECT_GT(orbit_agreement(chain_of("{newton_pow3: {c: [-0.8, 0.3, 0.2], solution: 1.2, scale: 1.1, pre_scale: 0.9,"
+                                     " post_scale: 1.3, iterations: 9, bailout: 20}}"),
+                            other, 2.0),
             0.99);
 }
 

@@ -13,7 +13,7 @@ extern const Preset kAboxMod11Preset, kAmazingSurfMod2Preset, kAmazingSurfMod4Pr
 extern const Preset kMengerMod1Preset, kMengerSmoothPreset, kMenger3Preset, kMengerCrossKifsPreset;
 extern const Preset kJosKleinianPreset;
 extern const Preset kJuliaPreset, kQuaternionPreset, kHypercomplexPreset, kAexionPreset;
-extern const Preset kAmazingIfsPreset;
+extern const Preset kAmazingIfsPreset, kNewtonPow3Preset;
 
 const std::vector<const Preset*>& presets() {
   static const std::vector<const Preset*> all =
@@ -26,7 +26,7 @@ const std::vector<const Preset*>& presets() {
                               &kMengerMod1Preset, &kMengerSmoothPreset, &kMenger3Preset, &kMengerCrossKifsPreset,
                               &kJosKleinianPreset,
                               &kJuliaPreset, &kQuaternionPreset, &kHypercomplexPreset, &kAexionPreset,
-                              &kAmazingIfsPreset});
+                              &kAmazingIfsPreset, &kNewtonPow3Preset});
   return all;
 }
 

@@ -9,14 +9,14 @@ extern const StepDef kRotate, kScale, kScaleXYZ, kTranslate, kAddC, kBulbPower, 
 extern const StepDef kSphericalInvert, kKleinianFold, kSurfFold, kPolyfold, kIcosaFold;
 extern const StepDef kWrap, kKleinianFlip;
 extern const StepDef kQuaternion, kHypercomplex, kQuadray, kAexion;  // 4-D
-extern const StepDef kPolyhedralFold;
+extern const StepDef kPolyhedralFold, kTriplexNewton;
 
 const std::vector<const StepDef*>& steps() {
   static const std::vector<const StepDef*> all = sorted_by_name<StepDef>(
       {&kAbs, &kAddC, &kBoxFold, &kBulbPower, &kExpr, &kMengerFold, &kOctaFold, &kPlaneFold, &kRotate, &kScale, &kScaleXYZ,
        &kSphereFold, &kTetraFold, &kTranslate, &kSphericalInvert, &kKleinianFold, &kSurfFold, &kPolyfold, &kIcosaFold,
        &kWrap, &kKleinianFlip,
-       &kQuaternion, &kHypercomplex, &kQuadray, &kAexion, &kPolyhedralFold});
+       &kQuaternion, &kHypercomplex, &kQuadray, &kAexion, &kPolyhedralFold, &kTriplexNewton});
   return all;
 }
 
