@@ -106,6 +106,10 @@ TEST(FractChains, KaleidoscopicIfsVectorsEdgesAndMengerMode) {
   // Menger mode: z.z −= 2 above 1 is, before the next abs, the fold at 1.
   std::string menger = iterate_of(imported(fract("formula_1 10;\nN 12;\n", ifs + "IFS_menger_sponge_mode true;\n")).yaml);
   EXPECT_TRUE(has(menger, "{scale: {scale: 3, offset: [1, 1, 0]}}, {plane_fold: {normal: [0, 0, 1], offset: 1}}]")) << menger;
+  // Mirrored (legacy coordinates), y = |y| becomes y = −|y|: a fold of y > 0.
+  std::string mirrored = iterate_of(imported(fract("formula_1 10;\nN 12;\nlegacy_coordinate_system true;\n", ifs)).yaml);
+  EXPECT_TRUE(has(mirrored, "[{abs: {axes: [1, 0, 1]}}, {plane_fold: {normal: [0, 1, 0], offset: 0}}, "
+                            "{plane_fold: {normal: [0, 0.6, -0.8], offset: -0.5}}")) << mirrored;
   EXPECT_TRUE(has(error_of(fract("formula_1 10;\n", "IFS_menger_sponge_mode true;\nIFS_offset 1 1 1;\n")), "IFS_menger_sponge_mode"));
   EXPECT_TRUE(has(error_of(fract("formula_1 10;\n", "IFS_enabled_0 true;\nIFS_intensity_0 0,5;\n")), "IFS_intensity_0"));
 }

@@ -98,8 +98,12 @@ ChainPart menger_chain(const FormulaInput& in) {
 ChainPart ifs_chain(const FormulaInput& in) {
   const Params& f = in.fractal;
   std::string s;
-  Vec3 axes{double(f.boolean("IFS_abs_x")), double(f.boolean("IFS_abs_y")), double(f.boolean("IFS_abs_z"))};
+  // Mirrored in y, Mandelbulber's y = |y| is y = -|y| (a fold of y > 0):
+  // an abs there would leave the mirrored vectors below on the wrong side.
+  bool abs_y = f.boolean("IFS_abs_y"), fold_y = abs_y && in.mirror_y;
+  Vec3 axes{double(f.boolean("IFS_abs_x")), double(abs_y && !fold_y), double(f.boolean("IFS_abs_z"))};
   if (axes != Vec3{0, 0, 0}) s += vstep("abs", "axes", axes) + ", ";
+  if (fold_y) s += "{plane_fold: {normal: [0, 1, 0], offset: 0}}, ";
   // Each enabled vector: its rotation, then the reflection where z·d < distance.
   for (int i = 0; i < 9; ++i) {
     if (!f.boolean(fmt::format("IFS_enabled_{}", i))) continue;
