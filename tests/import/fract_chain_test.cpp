@@ -83,15 +83,19 @@ TEST(FractChains, MandelbulbPower2AndTheConstantFactor) {
 }
 
 TEST(FractChains, MandelboxMainRotationAsRotateSteps) {
-  // SetRotation(r) is Rz(r.x)·Rx(r.y)·Ry(r.z): z turns about y first.
+  // The main rotation is SetRotation2(r): Rz(r.z)·Ry(r.y)·Rx(r.x), z turns about x first.
   std::string it = iterate_of(imported(fract("formula_1 8;\nN 12;\n", "mandelbox_main_rotation_enabled true;\nmandelbox_rotation_main 10 20 30;\n")).yaml);
-  EXPECT_TRUE(has(it, "{rotate: {axis: [0, 1, 0], angle: 30}}, {rotate: {axis: [1, 0, 0], angle: 20}}, "
-                      "{rotate: {axis: [0, 0, 1], angle: 10}}, {scale: 2}")) << it;
+  EXPECT_TRUE(has(it, "{rotate: {axis: [1, 0, 0], angle: 10}}, {rotate: {axis: [0, 1, 0], angle: 20}}, "
+                      "{rotate: {axis: [0, 0, 1], angle: 30}}, {scale: 2}")) << it;
   // Mirrored (legacy coordinates), the turns about x and z reverse.
   std::string mirrored = iterate_of(imported(fract("formula_1 8;\nN 12;\nlegacy_coordinate_system true;\n",
                                                    "mandelbox_main_rotation_enabled true;\nmandelbox_rotation_main 10 20 30;\n")).yaml);
-  EXPECT_TRUE(has(mirrored, "angle: 30}}, {rotate: {axis: [1, 0, 0], angle: -20}}, {rotate: {axis: [0, 0, 1], angle: -10}}"))
+  EXPECT_TRUE(has(mirrored, "angle: -10}}, {rotate: {axis: [0, 1, 0], angle: 20}}, {rotate: {axis: [0, 0, 1], angle: -30}}"))
       << mirrored;
+  // The IFS's rotations are SetRotation3(r): Rz(r.x)·Ry(r.y)·Rx(r.z).
+  std::string ifs = iterate_of(imported(fract("formula_1 10;\nN 12;\n", "IFS_enabled_0 true;\nIFS_rotations_0 10 20 30;\n")).yaml);
+  EXPECT_TRUE(has(ifs, "{rotate: {axis: [1, 0, 0], angle: 30}}, {rotate: {axis: [0, 1, 0], angle: 20}}, "
+                       "{rotate: {axis: [0, 0, 1], angle: 10}}, {plane_fold")) << ifs;
 }
 
 TEST(FractChains, KaleidoscopicIfsVectorsEdgesAndMengerMode) {
