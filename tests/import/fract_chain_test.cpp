@@ -118,6 +118,18 @@ TEST(FractChains, KaleidoscopicIfsVectorsEdgesAndMengerMode) {
   EXPECT_TRUE(has(error_of(fract("formula_1 10;\n", "IFS_enabled_0 true;\nIFS_intensity_0 0,5;\n")), "IFS_intensity_0"));
 }
 
+TEST(FractChains, IfsRotationIsOnInFilesOf206AndBefore) {
+  // Mandelbulber turns IFS_rotation_enabled on in fractals 1 ... 4 when it loads a file of 2.06 or before.
+  auto it = [](const char* version) {
+    std::string text = fract("formula_1 10;\nN 12;\n", "IFS_enabled_0 true;\nIFS_rotation 30 0 0;\n");
+    text.replace(text.find("2.20"), 4, version);
+    return iterate_of(imported(text).yaml);
+  };
+  EXPECT_TRUE(has(it("2.05"), "{rotate: {axis: [0, 0, 1], angle: 30}}")) << it("2.05");
+  EXPECT_TRUE(has(it("2.06"), "{rotate: {axis: [0, 0, 1], angle: 30}}")) << it("2.06");
+  EXPECT_FALSE(has(it("2.07"), "rotate")) << it("2.07");
+}
+
 TEST(FractChains, HybridIsOnePeriodOfTheSequencePerPass) {
   // Mandelbox twice, then the Menger sponge: a period of 3 iterations.
   Imported im = imported(fract("hybrid_fractal_enable true;\nformula_1 8;\nformula_2 7;\nformula_iterations_1 2;\nN 30;\n"));

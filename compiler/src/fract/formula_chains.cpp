@@ -115,7 +115,10 @@ ChainPart ifs_chain(const FormulaInput& in) {
     s += plane_fold(in, {-d[0] / l, -d[1] / l, -d[2] / l}, -f.number(fmt::format("IFS_distance_{}", i))) + ", ";
   }
   Vec3 offset = f.vec3("IFS_offset");
-  if (f.boolean("IFS_rotation_enabled") && f.vec3("IFS_rotation") != Vec3{0, 0, 0}) {
+  // Files of 2.06 and before have no IFS_rotation_enabled: Mandelbulber
+  // turns it on in fractals 1 ... 4 when it loads them.
+  bool rotate = f.boolean("IFS_rotation_enabled") || (in.version > 0 && in.version <= 2.06 && in.slot <= 4);
+  if (rotate && f.vec3("IFS_rotation") != Vec3{0, 0, 0}) {
     bool shift = offset != Vec3{0, 0, 0};
     if (shift) s += vstep("translate", "offset", world(in, {-offset[0], -offset[1], -offset[2]})) + ", ";
     s += rotation3_steps(f.vec3("IFS_rotation"), in.mirror_y);

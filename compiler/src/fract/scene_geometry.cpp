@@ -83,7 +83,8 @@ auto with_input(const Slot& s, const File& file, const Params& main, ImportConte
                   main.integer("N"),
                   use_default ? f->default_bailout : main.number("bailout"),
                   &w.lines,
-                  w.mirror_y};
+                  w.mirror_y,
+                  file.version};
   return use(*f, in);
 }
 
