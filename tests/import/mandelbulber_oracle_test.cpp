@@ -1,8 +1,8 @@
 // Imported scenes against Mandelbulber's own renders (`mandelbulber2
 // --nogui`, when installed): the hit masks (sdfc's `hit` AOV against
-// Mandelbulber's alpha, its glow, fog and volumetric effects off so that
-// alpha is coverage) must agree on 97 % of the pixels at 160x120, and the
-// camera rules (the fov of 2.20 files, the half-pixel corner shift,
+// Mandelbulber's alpha, its glow, fog, volumetric effects and reflections
+// off so that alpha is coverage) must agree on 97 % of the pixels at
+// 160x120, and the camera rules (the fov of 2.20 files, the half-pixel corner shift,
 // detail_level as hit epsilon) must each do better than leaving them out.
 #include <gtest/gtest.h>
 #include <stb_image.h>
@@ -24,7 +24,7 @@ const char* kEffectsOff =
     "glow_enabled=false#basic_fog_enabled=false#volumetric_fog_enabled=false#fake_lights_enabled=false#"
     "iteration_fog_enable=false#DOF_enabled=false#main_light_volumetric_enabled=false#"
     "aux_light_volumetric_enabled_1=false#aux_light_volumetric_enabled_2=false#"
-    "aux_light_volumetric_enabled_3=false#aux_light_volumetric_enabled_4=false";
+    "aux_light_volumetric_enabled_3=false#aux_light_volumetric_enabled_4=false#raytraced_reflections=false";
 
 bool have_mandelbulber() { return std::system("command -v mandelbulber2 >/dev/null 2>&1") == 0; }
 
