@@ -139,6 +139,10 @@ TEST(FractChains, HybridIsOnePeriodOfTheSequencePerPass) {
   EXPECT_EQ(it.find("box_fold", second + 1), std::string::npos);
   EXPECT_TRUE(has(im.yaml, "iterations: 10 ")) << im.yaml;
   EXPECT_NE(module_of(im.yaml).root, ir::kNoNode);
+  // Mirrored (legacy coordinates), y flips back after the Menger fold's abs, before the next c.
+  std::string mirrored = iterate_of(imported(fract("hybrid_fractal_enable true;\nformula_1 8;\nformula_2 7;\nN 30;\n"
+                                                   "legacy_coordinate_system true;\n")).yaml);
+  EXPECT_TRUE(has(mirrored, "offset: [1, 1, 1]}}, {scale_xyz: {scale: [1, -1, 1]}}]")) << mirrored;
   // A formula without a chain form names itself.
   EXPECT_TRUE(has(error_of(fract("hybrid_fractal_enable true;\nformula_1 8;\nformula_2 5;\n")),
                   "formula 'Quaternion' (id 5) is not supported yet (in a hybrid)"));

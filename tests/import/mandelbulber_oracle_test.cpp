@@ -189,6 +189,16 @@ TEST_F(MandelbulberOracle, ChainFormulaSilhouettesAgree) {
   std::printf("hybrid: masks agree on %.2f %% of the pixels (the Mandelbox alone: %.2f %%)\n", 100 * a, 100 * box_alone);
 }
 
+// Mirrored (legacy coordinates), the Menger sponge's abs forgets the mirror:
+// without flipping y back the Mandelbox's c lands on the wrong side (89.5 %).
+TEST_F(MandelbulberOracle, LegacyHybridFlipsYBackAfterTheMengerFold) {
+  std::string hybrid = dir.write("legacy_hybrid.fract",
+                                 "# Mandelbulber settings file\n# version 2.20\n# only modified parameters\n[main_parameters]\n"
+                                 "formula_1 8;\nformula_2 7;\nhybrid_fractal_enable true;\nlegacy_coordinate_system true;\n"
+                                 "N 12;\nfov 0,9;\ncamera 2 -5 1,5;\n[fractal_1]\n[fractal_2]\n");
+  EXPECT_GE(agreement(mandelbulber_mask(hybrid, dir), sdfc_mask(hybrid, "", dir)), 0.94);
+}
+
 // The formulas imported as presets, each at its defaults and with other
 // values: Xenodreambuie (id 11: a julia constant and power 5), Menger - Mod 1
 // (id 61: multipliers that take the chain off the plain Menger fold, and an

@@ -90,6 +90,9 @@ ChainPart menger_chain(const FormulaInput& in) {
   if (!(s > 1.001 && s <= 10)) unsupported_setting(in, "transf_scale_3", num(s));
   double o = 2 / (s - 1);
   std::string steps = fmt::format("{{menger_fold: {{scale: {}, offset: {}}}}}", num(s), vec(Vec3{o, o, o}));
+  // Its abs forgets the mirror (legacy_coordinate_system): flip y back, or
+  // the c added after it (here or by the next formula) is on the wrong side.
+  if (in.mirror_y) steps += ", {scale_xyz: {scale: [1, -1, 1]}}";
   std::string c = add_c_step(in, adds_c(in, false));
   return {c.empty() ? steps : steps + ", " + c, "menger_sponge.cl with transf_scale_3", 40};
 }
