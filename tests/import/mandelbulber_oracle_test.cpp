@@ -24,7 +24,8 @@ const char* kEffectsOff =
     "glow_enabled=false#basic_fog_enabled=false#volumetric_fog_enabled=false#fake_lights_enabled=false#"
     "iteration_fog_enable=false#DOF_enabled=false#main_light_volumetric_enabled=false#"
     "aux_light_volumetric_enabled_1=false#aux_light_volumetric_enabled_2=false#"
-    "aux_light_volumetric_enabled_3=false#aux_light_volumetric_enabled_4=false#raytraced_reflections=false";
+    "aux_light_volumetric_enabled_3=false#aux_light_volumetric_enabled_4=false#raytraced_reflections=false#"
+    "aux_light_visibility=0";
 
 bool have_mandelbulber() { return std::system("command -v mandelbulber2 >/dev/null 2>&1") == 0; }
 
