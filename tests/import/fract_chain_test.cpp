@@ -83,15 +83,19 @@ TEST(FractChains, MandelbulbPower2AndTheConstantFactor) {
 }
 
 TEST(FractChains, MandelboxMainRotationAsRotateSteps) {
-  // SetRotation(r) is Rz(r.x)·Rx(r.y)·Ry(r.z): z turns about y first.
+  // The main rotation is SetRotation2(r): Rz(r.z)·Ry(r.y)·Rx(r.x), z turns about x first.
   std::string it = iterate_of(imported(fract("formula_1 8;\nN 12;\n", "mandelbox_main_rotation_enabled true;\nmandelbox_rotation_main 10 20 30;\n")).yaml);
-  EXPECT_TRUE(has(it, "{rotate: {axis: [0, 1, 0], angle: 30}}, {rotate: {axis: [1, 0, 0], angle: 20}}, "
-                      "{rotate: {axis: [0, 0, 1], angle: 10}}, {scale: 2}")) << it;
+  EXPECT_TRUE(has(it, "{rotate: {axis: [1, 0, 0], angle: 10}}, {rotate: {axis: [0, 1, 0], angle: 20}}, "
+                      "{rotate: {axis: [0, 0, 1], angle: 30}}, {scale: 2}")) << it;
   // Mirrored (legacy coordinates), the turns about x and z reverse.
   std::string mirrored = iterate_of(imported(fract("formula_1 8;\nN 12;\nlegacy_coordinate_system true;\n",
                                                    "mandelbox_main_rotation_enabled true;\nmandelbox_rotation_main 10 20 30;\n")).yaml);
-  EXPECT_TRUE(has(mirrored, "angle: 30}}, {rotate: {axis: [1, 0, 0], angle: -20}}, {rotate: {axis: [0, 0, 1], angle: -10}}"))
+  EXPECT_TRUE(has(mirrored, "angle: -10}}, {rotate: {axis: [0, 1, 0], angle: 20}}, {rotate: {axis: [0, 0, 1], angle: -30}}"))
       << mirrored;
+  // The IFS's rotations are SetRotation3(r): Rz(r.x)·Ry(r.y)·Rx(r.z).
+  std::string ifs = iterate_of(imported(fract("formula_1 10;\nN 12;\n", "IFS_enabled_0 true;\nIFS_rotations_0 10 20 30;\n")).yaml);
+  EXPECT_TRUE(has(ifs, "{rotate: {axis: [1, 0, 0], angle: 30}}, {rotate: {axis: [0, 1, 0], angle: 20}}, "
+                       "{rotate: {axis: [0, 0, 1], angle: 10}}, {plane_fold")) << ifs;
 }
 
 TEST(FractChains, KaleidoscopicIfsVectorsEdgesAndMengerMode) {
@@ -106,8 +110,24 @@ TEST(FractChains, KaleidoscopicIfsVectorsEdgesAndMengerMode) {
   // Menger mode: z.z −= 2 above 1 is, before the next abs, the fold at 1.
   std::string menger = iterate_of(imported(fract("formula_1 10;\nN 12;\n", ifs + "IFS_menger_sponge_mode true;\n")).yaml);
   EXPECT_TRUE(has(menger, "{scale: {scale: 3, offset: [1, 1, 0]}}, {plane_fold: {normal: [0, 0, 1], offset: 1}}]")) << menger;
+  // Mirrored (legacy coordinates), y = |y| becomes y = −|y|: a fold of y > 0.
+  std::string mirrored = iterate_of(imported(fract("formula_1 10;\nN 12;\nlegacy_coordinate_system true;\n", ifs)).yaml);
+  EXPECT_TRUE(has(mirrored, "[{abs: {axes: [1, 0, 1]}}, {plane_fold: {normal: [0, 1, 0], offset: 0}}, "
+                            "{plane_fold: {normal: [0, 0.6, -0.8], offset: -0.5}}")) << mirrored;
   EXPECT_TRUE(has(error_of(fract("formula_1 10;\n", "IFS_menger_sponge_mode true;\nIFS_offset 1 1 1;\n")), "IFS_menger_sponge_mode"));
   EXPECT_TRUE(has(error_of(fract("formula_1 10;\n", "IFS_enabled_0 true;\nIFS_intensity_0 0,5;\n")), "IFS_intensity_0"));
+}
+
+TEST(FractChains, IfsRotationIsOnInFilesOf206AndBefore) {
+  // Mandelbulber turns IFS_rotation_enabled on in fractals 1 ... 4 when it loads a file of 2.06 or before.
+  auto it = [](const char* version) {
+    std::string text = fract("formula_1 10;\nN 12;\n", "IFS_enabled_0 true;\nIFS_rotation 30 0 0;\n");
+    text.replace(text.find("2.20"), 4, version);
+    return iterate_of(imported(text).yaml);
+  };
+  EXPECT_TRUE(has(it("2.05"), "{rotate: {axis: [0, 0, 1], angle: 30}}")) << it("2.05");
+  EXPECT_TRUE(has(it("2.06"), "{rotate: {axis: [0, 0, 1], angle: 30}}")) << it("2.06");
+  EXPECT_FALSE(has(it("2.07"), "rotate")) << it("2.07");
 }
 
 TEST(FractChains, HybridIsOnePeriodOfTheSequencePerPass) {
@@ -119,6 +139,10 @@ TEST(FractChains, HybridIsOnePeriodOfTheSequencePerPass) {
   EXPECT_EQ(it.find("box_fold", second + 1), std::string::npos);
   EXPECT_TRUE(has(im.yaml, "iterations: 10 ")) << im.yaml;
   EXPECT_NE(module_of(im.yaml).root, ir::kNoNode);
+  // Mirrored (legacy coordinates), y flips back after the Menger fold's abs, before the next c.
+  std::string mirrored = iterate_of(imported(fract("hybrid_fractal_enable true;\nformula_1 8;\nformula_2 7;\nN 30;\n"
+                                                   "legacy_coordinate_system true;\n")).yaml);
+  EXPECT_TRUE(has(mirrored, "offset: [1, 1, 1]}}, {scale_xyz: {scale: [1, -1, 1]}}]")) << mirrored;
   // A formula without a chain form names itself.
   EXPECT_TRUE(has(error_of(fract("hybrid_fractal_enable true;\nformula_1 8;\nformula_2 5;\n")),
                   "formula 'Quaternion' (id 5) is not supported yet (in a hybrid)"));

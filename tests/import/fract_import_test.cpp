@@ -98,6 +98,10 @@ TEST(FractImport, UnsupportedFormulasAreErrorsNamingThemAndTheirIds) {
   EXPECT_NE(error_of(fract("2.20", "formula_1 7;\nboolean_operators true;\nfractal_rotation 0 0 10;\n"))
                 .find("rotating the fractal in boolean mode"),
             std::string::npos);
+  // Mandelbulber's folds before every iteration's formula change any shape.
+  EXPECT_EQ(error_of(fract("2.20", "formula_1 7;\nspherical_folding true;\n")),
+            "6:19 the general box and spherical folding is not supported yet (spherical_folding = true)");
+  EXPECT_NE(error_of(fract("2.20", "box_folding true;\n")).find("(box_folding = true)"), std::string::npos);
   // The presets' writers refuse the options their presets leave out.
   EXPECT_NE(error_of(fract("2.20", "formula_1 11;\n", "alpha_angle_offset 10;\n"))
                 .find("formula 'Xenodreambuie' (id 11) with alpha_angle_offset = 10"),

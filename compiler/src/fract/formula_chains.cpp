@@ -5,7 +5,9 @@
 // steps, and c added times fractal_constant_factor.
 #include <fmt/format.h>
 
+#include <array>
 #include <cmath>
+#include <utility>
 
 #include "formula_writers.hpp"
 
@@ -24,27 +26,24 @@ Vec3 world(const FormulaInput& in, const Vec3& v) { return in.mirror_y ? Vec3{v[
 
 }  // namespace
 
-// CRotationMatrix::SetRotation(r): Rz(r.x)·Rx(r.y)·Ry(r.z), in degrees, so z
-// turns about y first. Mirrored in y, the turns about x and z reverse.
-std::string rotation_steps(const Vec3& degrees, bool mirror) {
+// Turns about x, y, z by the given angles, in the order z sees them.
+// Mirrored in y, the turns about x and z reverse.
+std::string turn_steps(const std::array<std::pair<int, double>, 3>& turns, bool mirror) {
   std::string s;
-  const char* axes[3] = {"[0, 0, 1]", "[1, 0, 0]", "[0, 1, 0]"};
-  for (int i = 2; i >= 0; --i) {
-    double a = degrees[size_t(i)] * (mirror && i != 2 ? -1 : 1);
-    if (a != 0) s += fmt::format("{{rotate: {{axis: {}, angle: {}}}}}, ", axes[i], num(a));
+  const char* axes[3] = {"[1, 0, 0]", "[0, 1, 0]", "[0, 0, 1]"};
+  for (const auto& [axis, degrees] : turns) {
+    double a = degrees * (mirror && axis != 1 ? -1 : 1);
+    if (a != 0) s += fmt::format("{{rotate: {{axis: {}, angle: {}}}}}, ", axes[axis], num(a));
   }
   return s;
 }
 
-// CRotationMatrix::SetRotation2 (transf_rotation): Rz(r.z)·Ry(r.y)·Rx(r.x),
-// so z turns about x first.
-std::string rotation2_steps(const Vec3& degrees) {
-  std::string s;
-  const char* axes[3] = {"[1, 0, 0]", "[0, 1, 0]", "[0, 0, 1]"};
-  for (size_t i = 0; i < 3; ++i)
-    if (degrees[i] != 0) s += fmt::format("{{rotate: {{axis: {}, angle: {}}}}}, ", axes[i], num(degrees[i]));
-  return s;
-}
+// CRotationMatrix::SetRotation2 (Mandelbox main rotation, transf_rotation):
+// Rz(r.z)·Ry(r.y)·Rx(r.x), so z turns about x first.
+std::string rotation2_steps(const Vec3& r, bool mirror) { return turn_steps({{{0, r[0]}, {1, r[1]}, {2, r[2]}}}, mirror); }
+
+// CRotationMatrix::SetRotation3 (the IFS rotations): Rz(r.x)·Ry(r.y)·Rx(r.z).
+std::string rotation3_steps(const Vec3& r, bool mirror) { return turn_steps({{{0, r[2]}, {1, r[1]}, {2, r[0]}}}, mirror); }
 
 // compute_fractal.cl adds c·fractal_constant_factor (julia_c times it in
 // julia mode, which the formula's julia constant carries); `adds` says
@@ -78,7 +77,7 @@ ChainPart mandelbox_chain(const FormulaInput& in) {
   if (!(limit > 0)) unsupported_setting(in, "mandelbox_folding_limit", num(limit));
   std::string s = fmt::format("{{box_fold: {{limit: {}}}}}, {{sphere_fold: {{min_radius: {}, fixed_radius: {}}}}}, ", num(limit),
                               num(min_r), num(fixed_r));
-  if (f.boolean("mandelbox_main_rotation_enabled")) s += rotation_steps(f.vec3("mandelbox_rotation_main"), in.mirror_y);
+  if (f.boolean("mandelbox_main_rotation_enabled")) s += rotation2_steps(f.vec3("mandelbox_rotation_main"), in.mirror_y);
   s += fmt::format("{{scale: {}}}", num(scale));
   std::string c = add_c_step(in, adds_c(in, true));
   return {c.empty() ? s : s + ", " + c, "mandelbox.cl: box fold, sphere fold, main rotation, scale, + c", 200};
@@ -91,6 +90,9 @@ ChainPart menger_chain(const FormulaInput& in) {
   if (!(s > 1.001 && s <= 10)) unsupported_setting(in, "transf_scale_3", num(s));
   double o = 2 / (s - 1);
   std::string steps = fmt::format("{{menger_fold: {{scale: {}, offset: {}}}}}", num(s), vec(Vec3{o, o, o}));
+  // Its abs forgets the mirror (legacy_coordinate_system): flip y back, or
+  // the c added after it (here or by the next formula) is on the wrong side.
+  if (in.mirror_y) steps += ", {scale_xyz: {scale: [1, -1, 1]}}";
   std::string c = add_c_step(in, adds_c(in, false));
   return {c.empty() ? steps : steps + ", " + c, "menger_sponge.cl with transf_scale_3", 40};
 }
@@ -98,8 +100,12 @@ ChainPart menger_chain(const FormulaInput& in) {
 ChainPart ifs_chain(const FormulaInput& in) {
   const Params& f = in.fractal;
   std::string s;
-  Vec3 axes{double(f.boolean("IFS_abs_x")), double(f.boolean("IFS_abs_y")), double(f.boolean("IFS_abs_z"))};
+  // Mirrored in y, Mandelbulber's y = |y| is y = -|y| (a fold of y > 0):
+  // an abs there would leave the mirrored vectors below on the wrong side.
+  bool abs_y = f.boolean("IFS_abs_y"), fold_y = abs_y && in.mirror_y;
+  Vec3 axes{double(f.boolean("IFS_abs_x")), double(abs_y && !fold_y), double(f.boolean("IFS_abs_z"))};
   if (axes != Vec3{0, 0, 0}) s += vstep("abs", "axes", axes) + ", ";
+  if (fold_y) s += "{plane_fold: {normal: [0, 1, 0], offset: 0}}, ";
   // Each enabled vector: its rotation, then the reflection where z·d < distance.
   for (int i = 0; i < 9; ++i) {
     if (!f.boolean(fmt::format("IFS_enabled_{}", i))) continue;
@@ -108,14 +114,17 @@ ChainPart ifs_chain(const FormulaInput& in) {
     Vec3 d = f.vec3(fmt::format("IFS_direction_{}", i));
     double l = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     if (!(l > 1e-12)) unsupported_setting(in, fmt::format("IFS_direction_{}", i), "0 0 0");
-    s += rotation_steps(f.vec3(fmt::format("IFS_rotations_{}", i)), in.mirror_y);
+    s += rotation3_steps(f.vec3(fmt::format("IFS_rotations_{}", i)), in.mirror_y);
     s += plane_fold(in, {-d[0] / l, -d[1] / l, -d[2] / l}, -f.number(fmt::format("IFS_distance_{}", i))) + ", ";
   }
   Vec3 offset = f.vec3("IFS_offset");
-  if (f.boolean("IFS_rotation_enabled") && f.vec3("IFS_rotation") != Vec3{0, 0, 0}) {
+  // Files of 2.06 and before have no IFS_rotation_enabled: Mandelbulber
+  // turns it on in fractals 1 ... 4 when it loads them.
+  bool rotate = f.boolean("IFS_rotation_enabled") || (in.version > 0 && in.version <= 2.06 && in.slot <= 4);
+  if (rotate && f.vec3("IFS_rotation") != Vec3{0, 0, 0}) {
     bool shift = offset != Vec3{0, 0, 0};
     if (shift) s += vstep("translate", "offset", world(in, {-offset[0], -offset[1], -offset[2]})) + ", ";
-    s += rotation_steps(f.vec3("IFS_rotation"), in.mirror_y);
+    s += rotation3_steps(f.vec3("IFS_rotation"), in.mirror_y);
     if (shift) s += vstep("translate", "offset", world(in, offset)) + ", ";
   }
   Vec3 edge = f.vec3("IFS_edge");  // z = e − |e − z|: the side beyond e reflected back

@@ -26,6 +26,7 @@ struct FormulaInput {
   double bailout;         // the bailout Mandelbulber uses for this formula
   std::vector<std::string>* warnings;
   bool mirror_y;          // legacy_coordinate_system: the scene is mirrored y -> -y
+  double version = 0;     // the file's Mandelbulber version (0: not given)
 };
 
 using FormulaWriter = Node (*)(const FormulaInput&);

@@ -18,8 +18,8 @@ void require_c_added(const FormulaInput& in);
 // steps ("" or items ending in ", "); the step adding c (times
 // fractal_constant_factor; "" when `adds` is false); whether the formula adds
 // c (dont_add_c_constant_N against its default); julia_c times the factor.
-std::string rotation_steps(const Vec3& degrees, bool mirror);
-std::string rotation2_steps(const Vec3& degrees);  // SetRotation2's order (transf_rotation)
+std::string rotation2_steps(const Vec3& degrees, bool mirror = false);  // SetRotation2's order (Mandelbox, transf_rotation)
+std::string rotation3_steps(const Vec3& degrees, bool mirror);          // SetRotation3's order (the IFS)
 std::string add_c_step(const FormulaInput& in, bool adds);
 bool adds_c(const FormulaInput& in, bool by_default);
 Vec3 julia_constant(const FormulaInput& in);

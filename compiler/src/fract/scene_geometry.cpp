@@ -51,6 +51,9 @@ void refuse_unmapped_shape_keys(const Params& main) {
   if (main.given("interior_mode") && main.boolean("interior_mode")) refuse("interior_mode", "the interior mode");
   if (main.given("iteration_threshold_mode") && main.boolean("iteration_threshold_mode"))
     refuse("iteration_threshold_mode", "the iteration threshold mode");
+  // Mandelbulber's folds of every iteration, before any formula.
+  for (const char* key : {"box_folding", "spherical_folding"})
+    if (main.given(key) && main.boolean(key)) refuse(key, "the general box and spherical folding");
   for (const auto& [key, e] : main.section().entries)
     if (key.rfind("primitive_", 0) == 0 && key.size() > 8 && key.compare(key.size() - 8, 8, "_enabled") == 0 &&
         (e.value == "true" || e.value == "1"))
@@ -83,7 +86,8 @@ auto with_input(const Slot& s, const File& file, const Params& main, ImportConte
                   main.integer("N"),
                   use_default ? f->default_bailout : main.number("bailout"),
                   &w.lines,
-                  w.mirror_y};
+                  w.mirror_y,
+                  file.version};
   return use(*f, in);
 }
 
