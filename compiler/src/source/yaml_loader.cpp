@@ -2,13 +2,15 @@
 
 #include <fmt/format.h>
 #include <yaml-cpp/depthguard.h>
-#include <yaml-cpp/yaml.h>
+#include <yaml-cpp/exceptions.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <vector>
+
+#include "yaml_events.hpp"
 
 namespace sdfc {
 
@@ -36,9 +38,14 @@ SourceLoc loc_of(const YAML::Mark& m, const std::shared_ptr<const std::string>& 
   return {file, m.line >= 0 ? m.line + 1 : 0, m.column >= 0 ? m.column + 1 : 0};
 }
 
-SourceValue convert(const YAML::Node& n, const std::shared_ptr<const std::string>& file, int depth, Budget& budget) {
+bool tag_is_quoted(const yaml_events::Document& doc, const yaml_events::Value& n) { return doc.tags[n.tag] == "!"; }
+
+SourceValue convert(const yaml_events::Document& doc, std::uint32_t id, const std::shared_ptr<const std::string>& file,
+                    int depth, Budget& budget) {
+  using Kind = yaml_events::Value::Kind;
+  const yaml_events::Value& n = doc.values[id];
   SourceValue v;
-  v.loc = loc_of(n.Mark(), file);
+  v.loc = loc_of(n.mark, file);
   if (depth > kMaxDepth)
     fail(v.loc, fmt::format("the scene nests deeper than {} levels", kMaxDepth), kFlattenHint);
   if (++budget.values > kMaxValues)
@@ -48,32 +55,34 @@ SourceValue convert(const YAML::Node& n, const std::shared_ptr<const std::string
          budget.anchors ? "use fewer or less deeply nested aliases" : "no scene needs that many; use fewer values");
   // yaml-cpp reports "?" for a plain scalar and "!" for a quoted one; any
   // other tag (!foo, !!binary) means something this format does not have.
-  if (const std::string& tag = n.Tag(); !tag.empty() && tag != "?" && tag != "!" &&
+  if (const std::string& tag = doc.tags[n.tag]; !tag.empty() && tag != "?" && tag != "!" &&
                                          tag.rfind("tag:yaml.org,2002:", 0) != 0)
     fail(v.loc, fmt::format("unknown tag '{}'", tag.substr(0, 80)), "scene values take no tags; remove it");
-  switch (n.Type()) {
-    case YAML::NodeType::Undefined:
-    case YAML::NodeType::Null: v.kind = SourceValue::Kind::Null; break;
-    case YAML::NodeType::Scalar:
+  const std::uint32_t* kids = doc.kids.data() + n.first;
+  switch (n.kind) {
+    case Kind::Null: v.kind = SourceValue::Kind::Null; break;
+    case Kind::Scalar:
       v.kind = SourceValue::Kind::Scalar;
-      if (n.Scalar().size() > kMaxScalarBytes)
-        fail(v.loc, fmt::format("a value of {} bytes; at most {} are allowed", n.Scalar().size(), kMaxScalarBytes));
-      v.scalar = n.Scalar();
-      v.quoted = n.Tag() == "!";
+      if (n.scalar.size() > kMaxScalarBytes)
+        fail(v.loc, fmt::format("a value of {} bytes; at most {} are allowed", n.scalar.size(), kMaxScalarBytes));
+      v.scalar = n.scalar;
+      v.quoted = tag_is_quoted(doc, n);
       break;
-    case YAML::NodeType::Sequence:
+    case Kind::Sequence:
       v.kind = SourceValue::Kind::Sequence;
-      for (const auto& item : n) v.items.push_back(convert(item, file, depth + 1, budget));
+      v.items.reserve(n.count);
+      for (std::uint32_t i = 0; i < n.count; ++i) v.items.push_back(convert(doc, kids[i], file, depth + 1, budget));
       break;
-    case YAML::NodeType::Map:
+    case Kind::Map:
       v.kind = SourceValue::Kind::Map;
-      for (const auto& kv : n) {
-        SourceValue key = convert(kv.first, file, depth + 1, budget);
+      v.entries.reserve(n.count / 2);
+      for (std::uint32_t i = 0; i + 1 < n.count; i += 2) {
+        SourceValue key = convert(doc, kids[i], file, depth + 1, budget);
         if (!key.is_scalar())
           fail(key.loc, "a map key must be a plain word, not " + key.kind_name(), "");
         if (v.find(key.scalar))
           fail(key.loc, "duplicate key '" + key.scalar + "'", "each key may appear once in a map");
-        SourceValue value = convert(kv.second, file, depth + 1, budget);
+        SourceValue value = convert(doc, kids[i + 1], file, depth + 1, budget);
         // An empty value ("scene:" then nothing) is marked where the next
         // token starts, often a later line; point just past its key instead.
         if (value.is_null() && value.loc.line != key.loc.line)
@@ -154,7 +163,7 @@ SourceValue load_yaml_text(const std::string& text, const std::string& name) {
       fail(SourceLoc(file, int(line), int(first - i + 1)), "a tab in the indentation", "YAML indents with spaces only; use spaces");
     i = end + 1;
   }
-  YAML::Node root;
+  yaml_events::Document doc;
   try {
     // yaml-cpp's LoadAll loops for minutes on some junk (", x"), so the
     // second document is found by its marker: a line starting "---" after
@@ -163,7 +172,7 @@ SourceValue load_yaml_text(const std::string& text, const std::string& name) {
       fail(SourceLoc(file, line, 1), "a second YAML document (after '---'); a scene file holds one",
            "remove the '---' line or split the file");
     }
-    root = YAML::Load(text);
+    doc = yaml_events::parse(text);
   } catch (const YAML::DeepRecursion& e) {
     // yaml-cpp's own guard (deeper than ours, so the same message fits).
     SourceLoc at = loc_of(e.mark, file);
@@ -172,11 +181,11 @@ SourceValue load_yaml_text(const std::string& text, const std::string& name) {
   } catch (const YAML::Exception& e) {
     fail(loc_of(e.mark, file), "YAML syntax error: " + e.msg);
   }
-  if (!root.IsDefined() || root.IsNull())
+  if (doc.root < 0 || doc.values[size_t(doc.root)].kind == yaml_events::Value::Kind::Null)
     fail(SourceLoc(file, 1, 1), "the scene file is empty", "a scene needs at least a 'scene:' key");
   Budget budget;
   budget.anchors = text.find('&') != std::string::npos;
-  return convert(root, file, 0, budget);
+  return convert(doc, std::uint32_t(doc.root), file, 0, budget);
 }
 
 SourceValue load_yaml_file(const std::string& path) {
