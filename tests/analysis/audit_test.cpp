@@ -75,6 +75,18 @@ TEST(Audit, DetectsTheNonConformalMandelboxOvershoot) {
   EXPECT_EQ(find(conformal, "mandelbox").overshoots, 0) << analysis::format_table(conformal);
 }
 
+// Mandelbulber's power-2 bulb polynomial jumps across the z axis, and its
+// estimate overshoots there: the warning names the step it trusts.
+TEST(Audit, NamesTheChainStepAnOvershootingEstimateTrusts) {
+  analysis::AuditOptions opt;
+  opt.rays = 48;
+  auto r = analysis::audit(
+      passes::run_pipeline(test::lower_text("scene:\n  mandelbulb_power_2: {iterations: 12, bailout: 8}\n")), opt);
+  const auto& f = find(r, "formula");
+  ASSERT_TRUE(f.warning) << analysis::format_table(r);
+  EXPECT_NE(f.note.find("the chain's expr (line 2)"), std::string::npos) << f.note;
+}
+
 TEST(Audit, LooksThroughBoundingBoxes) {
   // The root of this scene is wrapped in a bounding box by the passes; the
   // audit measures the geometry, so the box's switch is no "slope".

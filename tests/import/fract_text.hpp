@@ -1,5 +1,5 @@
 #pragma once
-// A 2.20 "only modified parameters" .fract made from its sections' lines,
+// A 2.20 (or other version's) "only modified parameters" .fract made from its sections' lines,
 // its import, and the first error an import reports.
 #include <string>
 
@@ -8,8 +8,9 @@
 
 namespace sdfc::fract::fract_text {
 
-inline std::string fract(const std::string& main, const std::string& fractal1 = "", const std::string& fractal2 = "") {
-  return "# Mandelbulber settings file\n# version 2.20\n# only modified parameters\n[main_parameters]\n" + main +
+inline std::string fract(const std::string& main, const std::string& fractal1 = "", const std::string& fractal2 = "",
+                         const std::string& version = "2.20") {
+  return "# Mandelbulber settings file\n# version " + version + "\n# only modified parameters\n[main_parameters]\n" + main +
          "[fractal_1]\n" + fractal1 + "[fractal_2]\n" + fractal2;
 }
 

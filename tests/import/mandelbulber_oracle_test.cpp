@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <sdfrt/image_read.hpp>
 
+#include "fract_text.hpp"
 #include "run_sdfc.hpp"
 
 namespace sdfc::fract {
@@ -69,8 +70,7 @@ double agreement(const std::vector<bool>& a, const std::vector<bool>& b) {
 
 // Mandelbulber's default camera (3, -6, 2) looking at the origin, on a Menger sponge.
 std::string menger_file(const std::string& extra, const std::string& fov = "0,3") {
-  return "# Mandelbulber settings file\n# version 2.20\n# only modified parameters\n[main_parameters]\n"
-         "formula_1 7;\nN 12;\nfov " + fov + ";\n" + extra + "[fractal_1]\n[fractal_2]\n";
+  return fract_text::fract("formula_1 7;\nN 12;\nfov " + fov + ";\n" + extra);
 }
 
 class MandelbulberOracle : public ::testing::Test {
@@ -92,8 +92,7 @@ TEST_F(MandelbulberOracle, ExampleSilhouettesAgree) {
 }
 
 TEST_F(MandelbulberOracle, QuaternionJuliaSilhouetteAgrees) {
-  std::string path = dir.write("q.fract", "# Mandelbulber settings file\n# version 2.20\n# only modified parameters\n[main_parameters]\nformula_1 5;\n"
-                                          "julia_mode true;\njulia_c -0,2 0,6 0,2;\nfov 0,5;\nN 12;\n[fractal_1]\n");
+  std::string path = dir.write("q.fract", fract_text::fract("formula_1 5;\njulia_mode true;\njulia_c -0,2 0,6 0,2;\nfov 0,5;\nN 12;\n"));
   EXPECT_GE(agreement(mandelbulber_mask(path, dir), sdfc_mask(path, "", dir)), 0.97);
 }
 
@@ -130,10 +129,9 @@ TEST_F(MandelbulberOracle, LegacyCoordinateSystemIsMirrored) {
 // the same side as in Mandelbulber (the abs left in matches on 51 %).
 TEST_F(MandelbulberOracle, LegacyKaleidoscopicIfsFoldsYToTheMirroredSide) {
   std::string path = dir.write("kifs.fract",
-                               "# Mandelbulber settings file\n# version 2.20\n# only modified parameters\n[main_parameters]\n"
-                               "formula_1 10;\nN 12;\nfov 0,5;\nlegacy_coordinate_system true;\n[fractal_1]\nIFS_abs_x true;\n"
-                               "IFS_abs_y true;\nIFS_abs_z true;\nIFS_enabled_0 true;\nIFS_direction_0 0,58 0,58 -0,58;\n"
-                               "IFS_enabled_1 true;\nIFS_direction_1 0,53 0,76 0,38;\nIFS_offset 1 1 1;\n");
+                               fract_text::fract("formula_1 10;\nN 12;\nfov 0,5;\nlegacy_coordinate_system true;\n",
+                                                 "IFS_abs_x true;\nIFS_abs_y true;\nIFS_abs_z true;\nIFS_enabled_0 true;\nIFS_direction_0 0,58 0,58 -0,58;\n"
+                               "IFS_enabled_1 true;\nIFS_direction_1 0,53 0,76 0,38;\nIFS_offset 1 1 1;\n"));
   EXPECT_GE(agreement(mandelbulber_mask(path, dir), sdfc_mask(path, "", dir)), 0.97);
 }
 
@@ -141,8 +139,7 @@ TEST_F(MandelbulberOracle, LegacyKaleidoscopicIfsFoldsYToTheMirroredSide) {
 // SetRotation3's (SetRotation's order matched on 97.0 % and 86.7 %).
 TEST_F(MandelbulberOracle, MandelboxAndIfsRotationsTurnInMandelbulbersOrder) {
   auto file = [&](const char* name, const std::string& main, const std::string& fractal) {
-    return dir.write(name, "# Mandelbulber settings file\n# version 2.20\n# only modified parameters\n[main_parameters]\n" +
-                               main + "N 12;\nfov 0,5;\n[fractal_1]\n" + fractal);
+    return dir.write(name, fract_text::fract(main + "N 12;\nfov 0,5;\n", fractal));
   };
   for (const std::string& f :
        {file("box.fract", "formula_1 8;\ncamera 9 -18 6;\n", "mandelbox_main_rotation_enabled true;\nmandelbox_rotation_main 20 40 60;\n"),
@@ -151,9 +148,10 @@ TEST_F(MandelbulberOracle, MandelboxAndIfsRotationsTurnInMandelbulbersOrder) {
              "IFS_rotations_0 10 20 30;\nIFS_rotation_enabled true;\nIFS_rotation 20 10 5;\nIFS_offset 1 1 1;\n")})
     EXPECT_GE(agreement(mandelbulber_mask(f, dir), sdfc_mask(f, "", dir)), 0.985) << f;
   // A file of 2.05 turns by IFS_rotation without IFS_rotation_enabled (left unturned: 93.9 %).
-  std::string old = dir.write("old.fract", "# Mandelbulber settings file\n# version 2.05\n# only modified parameters\n[main_parameters]\n"
-                                           "formula_1 10;\nN 12;\nfov 0,5;\n[fractal_1]\nIFS_abs_x true;\nIFS_abs_y true;\nIFS_abs_z true;\n"
-                                           "IFS_enabled_0 true;\nIFS_direction_0 0,58 0,58 -0,58;\nIFS_rotation 20 10 5;\nIFS_offset 1 1 1;\n");
+  std::string old = dir.write("old.fract", fract_text::fract("formula_1 10;\nN 12;\nfov 0,5;\n",
+                                                             "IFS_abs_x true;\nIFS_abs_y true;\nIFS_abs_z true;\nIFS_enabled_0 true;\n"
+                                                             "IFS_direction_0 0,58 0,58 -0,58;\nIFS_rotation 20 10 5;\nIFS_offset 1 1 1;\n",
+                                                             "", "2.05"));
   EXPECT_GE(agreement(mandelbulber_mask(old, dir), sdfc_mask(old, "", dir)), 0.985);
 }
 
@@ -178,8 +176,7 @@ TEST_F(MandelbulberOracle, ChainFormulaSilhouettesAgree) {
   // A close view full of edges: the hybrid's edges differ by a pixel here and there (sdfc checks the
   // bailout once per pass), so it must match 94 % and clearly beat the Mandelbox alone.
   auto file = [&](const char* name, const std::string& formulas) {
-    return dir.write(name, "# Mandelbulber settings file\n# version 2.20\n# only modified parameters\n[main_parameters]\n" +
-                               formulas + "N 12;\nfov 0,9;\ncamera 2 -5 1,5;\n[fractal_1]\n[fractal_2]\n");
+    return dir.write(name, fract_text::fract(formulas + "N 12;\nfov 0,9;\ncamera 2 -5 1,5;\n"));
   };
   std::string hybrid = file("hybrid.fract", "formula_1 8;\nformula_2 7;\nhybrid_fractal_enable true;\n");
   std::vector<bool> mb = mandelbulber_mask(hybrid, dir);
@@ -194,9 +191,8 @@ TEST_F(MandelbulberOracle, ChainFormulaSilhouettesAgree) {
 // without flipping y back the Mandelbox's c lands on the wrong side (89.5 %).
 TEST_F(MandelbulberOracle, LegacyHybridFlipsYBackAfterTheMengerFold) {
   std::string hybrid = dir.write("legacy_hybrid.fract",
-                                 "# Mandelbulber settings file\n# version 2.20\n# only modified parameters\n[main_parameters]\n"
-                                 "formula_1 8;\nformula_2 7;\nhybrid_fractal_enable true;\nlegacy_coordinate_system true;\n"
-                                 "N 12;\nfov 0,9;\ncamera 2 -5 1,5;\n[fractal_1]\n[fractal_2]\n");
+                                 fract_text::fract("formula_1 8;\nformula_2 7;\nhybrid_fractal_enable true;\n"
+                                                   "legacy_coordinate_system true;\nN 12;\nfov 0,9;\ncamera 2 -5 1,5;\n"));
   EXPECT_GE(agreement(mandelbulber_mask(hybrid, dir), sdfc_mask(hybrid, "", dir)), 0.94);
 }
 
@@ -206,8 +202,7 @@ TEST_F(MandelbulberOracle, LegacyHybridFlipsYBackAfterTheMengerFold) {
 // offset), the 4-D ones (4, 5, 19) and the ids below.
 TEST_F(MandelbulberOracle, PresetFormulaSilhouettesAgree) {
   auto file = [&](const char* name, const std::string& main, const std::string& fractal) {
-    return dir.write(name, "# Mandelbulber settings file\n# version 2.20\n# only modified parameters\n[main_parameters]\n" +
-                               main + "fov 0,5;\n[fractal_1]\n" + fractal);
+    return dir.write(name, fract_text::fract(main + "fov 0,5;\n", fractal));
   };
   for (const std::string& f :
        {file("xeno.fract", "formula_1 11;\nN 10;\n", ""),

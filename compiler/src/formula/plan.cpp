@@ -53,6 +53,7 @@ Plan plan(const Chain& c) {
     form = "r / |dr|: folds and scales grow |z| linearly";
   }
   p.why = form + "; " + derivative;
+  if (const Step* s = power ? power : non_conformal) p.leans_on = fmt::format("{} (line {})", s->def->name, s->loc.line);
   return p;
 }
 

@@ -83,6 +83,10 @@ struct Plan {
   bool kleinian = false;  // the pseudo-Kleinian form (DeChoice::Kleinian)
   bool jos_kleinian = false;  // the Jos Leys Kleinian form (DeChoice::JosKleinian)
   std::string why;
+  // The step whose growth the estimate takes on trust ("expr (line 18)"):
+  // the power step the log form assumes, else the first step that is not
+  // conformal; empty when every step is conformal with a known factor.
+  std::string leans_on;
 };
 Plan plan(const Chain& c);
 
