@@ -7,7 +7,7 @@
 #include <random>
 #include <unordered_map>
 
-#include "sdfc/formula/chain.hpp"
+#include "sdfc/kinds/formula_node.hpp"
 #include "sdfc/reference/evaluator.hpp"
 
 namespace sdfc::analysis {
@@ -179,7 +179,7 @@ NodeAudit audit_node(const ir::Graph& g, ir::NodeId id, const AuditOptions& opt,
                          a.recommended_step_factor);
     // A formula chain: name the step its estimate takes on trust.
     if (n.kind == ir::Kind::Formula) {
-      const std::string step = formula::plan(formula::chain(size_t(n.params.at(0)))).leans_on;
+      const std::string step = formula::plan(kinds::chain_of(n)).leans_on;
       if (!step.empty()) a.note += fmt::format(" (the estimate trusts the growth of the chain's {})", step);
     }
   } else if (a.cls == ir::DistanceClass::Exact && a.measured_slope > 1.02) {

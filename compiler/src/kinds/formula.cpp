@@ -10,6 +10,7 @@
 #include "sdfc/formula/evaluate.hpp"
 #include "sdfc/formula/preset.hpp"
 #include "sdfc/formula/read_chain.hpp"
+#include "sdfc/kinds/formula_node.hpp"
 #include "sdfc/kinds/registry.hpp"
 #include "sdfc/reference/evaluator.hpp"
 
@@ -91,10 +92,8 @@ ir::Props props(const ir::Node& n) {
 }
 
 double distance(const ir::Node& n, const V3& p) {
-  return formula::evaluate(formula::chain(size_t(view<FormulaP>(n).chain)), p).distance;
+  return formula::evaluate(chain_of(n), p).distance;
 }
-
-const formula::Chain& chain_of(const ir::Node& n) { return formula::chain(size_t(view<FormulaP>(n).chain)); }
 
 std::string emit(Emitter& e) {
   return formula::emit_chain(chain_of(e.n), e.p, e.lit, e.w, e.used, formula::Orbit::Distance);
@@ -138,6 +137,8 @@ constexpr ParamDoc k_docs[] = {
 };
 
 }  // namespace
+
+const formula::Chain& chain_of(const ir::Node& n) { return formula::chain(size_t(view<FormulaP>(n).chain)); }
 
 namespace described {
 extern const Description Formula{
