@@ -25,12 +25,6 @@ namespace {
 
 ir::Module module_of(const std::string& node) { return passes::run_pipeline(test::lower_text("scene: " + node + "\n")); }
 
-const ir::Node& formula_node(const ir::Module& m) {
-  for (ir::NodeId k : m.graph->postorder(m.root))
-    if (m.graph->node(k).kind == ir::Kind::Formula) return m.graph->node(k);
-  throw std::runtime_error("no formula node");
-}
-
 // The chain a module's fractal stands for: the formula node's, or the one a
 // preset drawn by its built-in kind's code noted at the kind's node.
 size_t index_of(const ir::Module& m) {

@@ -105,8 +105,9 @@ TEST(FormulaStepDerivative, EveryStepCarriesItsJacobianAndConformalFactor) {
               << "column " << k << " row " << r << " at " << z[0] << ", " << z[1] << ", " << z[2];
           norm += fd[k][r] * fd[k][r];
         }
-      if (st.def->conformal(st) && !st.def->power && st.def->name != "kleinian_fold" && !st.def->four_d)  // 4-D: the next test
+      if (st.def->conformal(st) && !st.def->power && st.def->name != "kleinian_fold" && !st.def->four_d) {  // 4-D: the next test
         EXPECT_NEAR(s.dr, std::sqrt(norm / 3), 1e-5 * std::max(1.0, s.dr)) << "the scalar factor";
+      }
     }
     EXPECT_GT(checked, 200);
   }
@@ -165,7 +166,9 @@ TEST(FormulaStepDerivative, EveryFourDStepCarriesItsJacobianWithTheWRow) {
           ASSERT_NEAR(r < 3 ? s.j[k][r] : s.jw[k], fd[k][r], 1e-5 * std::max(1.0, std::fabs(fd[k][r]))) << "column " << k << " row " << r;
           norm += fd[k][r] * fd[k][r];
         }
-      if (st.def->conformal(st) && !st.def->power) EXPECT_NEAR(s.dr, std::sqrt(norm / 3), 1e-5 * std::max(1.0, s.dr));
+      if (st.def->conformal(st) && !st.def->power) {
+        EXPECT_NEAR(s.dr, std::sqrt(norm / 3), 1e-5 * std::max(1.0, s.dr));
+      }
       RefState t;
       t.z = {q[0], q[1], q[2]};
       t.w = q[3];

@@ -186,7 +186,9 @@ TEST(ObjectSetRender, SameImageAsTheUnrolledUnion) {
     for (size_t i = 0; i < a.data.size(); ++i) differ += a.data[i] != b.data[i];
     for (float v : a.plane(a.plane_index("hit"))) hits += v > 0;
     EXPECT_EQ(differ, 0u);
-    if (c.name != "far_apart") EXPECT_GT(hits, 0u);  // the objects are in view
+    if (c.name != "far_apart") {
+      EXPECT_GT(hits, 0u);  // the objects are in view
+    }
   }
 }
 

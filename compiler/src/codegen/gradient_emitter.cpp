@@ -66,13 +66,14 @@ class GradientEmitter final : public kinds::DualWalker {
   }
 
   // A fractal: its distance exactly as scene_dist computes it (so the
-  // combinators choose the same child), and as gradient the unit direction
-  // of grad |z_n| from dual numbers through the orbit (a good estimator has
-  // |grad d| ~ 1, so this is its gradient where it matters, at the surface).
+  // combinators choose the same child), and the normal's direction from
+  // dual numbers through the orbit: a built-in kind's direction of
+  // grad |z_n|, a formula's exact gradient of its estimate (a good estimator
+  // has |grad d| ~ 1, so either serves where it matters, at the surface).
   DG fractal(const ir::Node& n, const std::string& p) {
     DG v{var("d"), var("g")};
     w_.line(fmt::format("real {} = {};  // {}", v.d, emit_fractal(n, p, lit_, w_, used_), ir::info(n.kind).name));
-    w_.line(fmt::format("vec3 {} = {};  // the direction of grad |z_n|", v.g, emit_fractal_dual(n, p, lit_, w_, used_)));
+    w_.line(fmt::format("vec3 {} = {};  // the normal's direction", v.g, emit_fractal_dual(n, p, lit_, w_, used_)));
     return v;
   }
 

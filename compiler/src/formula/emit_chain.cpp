@@ -11,6 +11,27 @@ using codegen::detail::CodeWriter;
 
 namespace {
 
+// render.normals: dual: the step's rule on dr and gdr, before the step
+// (z and the Jacobian as it receives them): gdr <- f gdr + dr J^T grad f.
+void emit_step_dual(const Step& st, EmitState& s) {
+  const DualFactor k = st.def->dual(st, s);
+  if (k.f.empty() && k.adds.empty()) return;  // keeps dr
+  const bool block = !k.temps.empty() || !k.grad_z.empty();
+  if (block) s.w.open(fmt::format("{{  // {}: dr and its gradient", st.def->name));
+  for (const std::string& t : k.temps) s.w.line(t);
+  std::string grad;
+  if (!k.grad_z.empty()) {
+    s.w.line(fmt::format("const vec3 gz = {};", k.grad_z));
+    grad = "v3(v3_dot(gz, ja), v3_dot(gz, jb), v3_dot(gz, jc))";
+    if (!k.grad_w.empty()) grad = fmt::format("v3_add({}, v3_scale(jw, {}))", grad, k.grad_w);
+  }
+  if (!k.f.empty() && grad.empty()) s.w.line(fmt::format("gdr = v3_scale(gdr, {});", k.f));
+  if (!grad.empty()) s.w.line(fmt::format("gdr = v3_add(v3_scale(gdr, {}), v3_scale({}, dr));", k.f, grad));
+  if (!k.f.empty()) s.w.line(fmt::format("dr = {} * dr;", k.f));
+  if (!k.adds.empty()) s.w.line(fmt::format("dr = dr + {};  // {}", k.adds, st.def->name));
+  if (block) s.w.close();
+}
+
 // The steps of one iteration; `first`: the index the chain starts at.
 void emit_steps(const Chain& c, EmitState& s, size_t first) {
   for (size_t k = first; k < c.steps.size(); ++k) {
@@ -21,6 +42,7 @@ void emit_steps(const Chain& c, EmitState& s, size_t first) {
                            st.from, st.until, st.def->name, st.until - 1));
     else if (windowed) s.w.open(fmt::format("if (i >= {} && i < {}) {{  // {} on iterations {} to {}", st.from, st.until,
                                        st.def->name, st.from, std::min(st.until, c.iterations) - 1));
+    if (s.dual) emit_step_dual(st, s);
     st.def->emit(st, s);
     if (windowed) s.w.close();
   }
@@ -31,11 +53,14 @@ void emit_steps(const Chain& c, EmitState& s, size_t first) {
 std::string emit_chain(const Chain& c, const std::string& p, const codegen::detail::Literals& lit, CodeWriter& w,
                        std::set<std::string>& used, Orbit what, const std::string& measure) {
   const Plan pl = plan(c);
-  const bool jac = pl.jacobian && what == Orbit::Distance;
+  // dual: the Jacobian (for grad z) and the scalar derivative with its gradient
+  const bool dual = what == Orbit::Gradient;
+  const bool jac = dual || (pl.jacobian && what == Orbit::Distance);
+  const bool scalar = !jac || dual;
   const std::string out = fmt::format("fo{}", w.fresh());
   const std::string bail = lit.real(c.bailout);
   const bool wide = four_d(c);  // z carries w (a 3-D chain's text is unchanged)
-  w.line(fmt::format("real {};  // formula: {}", out, pl.why));
+  w.line(fmt::format("{} {};  // formula: {}", dual ? "vec3" : "real", out, dual ? "the gradient of " + pl.why : pl.why));
   w.open("{");
   w.line(fmt::format("vec3 z = {};", p));
   w.line(fmt::format("const vec3 c = {};", c.julia ? lit.vec3(c.c) : p));
@@ -43,20 +68,20 @@ std::string emit_chain(const Chain& c, const std::string& p, const codegen::deta
   if (wide)
     w.line(fmt::format("real zw = {}; const real cw = {};  // z's and c's fourth components", lit.real(c.w_start),
                        lit.real(c.julia ? c.cw : 0)));
-  if (jac)
-    w.line("vec3 ja = v3(1.0f, 0.0f, 0.0f), jb = v3(0.0f, 1.0f, 0.0f), jc = v3(0.0f, 0.0f, 1.0f);");
-  else
-    w.line("real dr = 1.0f;");
+  if (jac) w.line("vec3 ja = v3(1.0f, 0.0f, 0.0f), jb = v3(0.0f, 1.0f, 0.0f), jc = v3(0.0f, 0.0f, 1.0f);");
+  if (scalar) w.line(dual ? "real dr = 1.0f; vec3 gdr = v3_splat(0.0f);  // and its gradient" : "real dr = 1.0f;");
   if (jac && wide) w.line("vec3 jw = v3(0.0f, 0.0f, 0.0f);  // dw/dp");
-  if (what != Orbit::Distance) w.line("real trap = 1e10f, n = 0.0f;");
+  if (what != Orbit::Distance && !dual) w.line("real trap = 1e10f, n = 0.0f;");
   const char* length = wide ? "sqrt(v3_dot(z, z) + zw * zw)" : "v3_length(z)";
   w.line(fmt::format("real r = {};", length));
   w.line(fmt::format("mask alive = r < {};", bail));
   w.open(fmt::format("for (int i = 0; i < {} && M_ANY(alive); ++i) {{", c.iterations));
   w.line(jac ? "const vec3 z0 = z, ja0 = ja, jb0 = jb, jc0 = jc;" : "const vec3 z0 = z; const real dr0 = dr;");
+  if (dual) w.line("const real dr0 = dr; const vec3 gdr0 = gdr;");
   if (wide) w.line(jac ? "const real zw0 = zw; const vec3 jw0 = jw;" : "const real zw0 = zw;");
   EmitState s{w, lit, used, jac};
   s.four_d = wide;
+  s.dual = dual;
   if (c.repeat_from > 0) {
     w.open("if (i == 0) {");
     emit_steps(c, s, 0);
@@ -68,12 +93,10 @@ std::string emit_chain(const Chain& c, const std::string& p, const codegen::deta
     emit_steps(c, s, 0);
   }
   w.line("z = v3_select(z0, z, alive);");
-  if (jac)
-    w.line("ja = v3_select(ja0, ja, alive); jb = v3_select(jb0, jb, alive); jc = v3_select(jc0, jc, alive);");
-  else
-    w.line("dr = SEL(dr0, dr, alive);");
+  if (jac) w.line("ja = v3_select(ja0, ja, alive); jb = v3_select(jb0, jb, alive); jc = v3_select(jc0, jc, alive);");
+  if (scalar) w.line(dual ? "dr = SEL(dr0, dr, alive); gdr = v3_select(gdr0, gdr, alive);" : "dr = SEL(dr0, dr, alive);");
   if (wide) w.line(jac ? "zw = SEL(zw0, zw, alive); jw = v3_select(jw0, jw, alive);" : "zw = SEL(zw0, zw, alive);");
-  if (what != Orbit::Distance) {
+  if (what != Orbit::Distance && !dual) {
     w.line("n = SEL(n, n + 1.0f, alive);");
     w.line(fmt::format("trap = SEL(trap, fmin(trap, {}), alive);",
                        measure.empty() ? "fmin(fabs(z.x), fmin(fabs(z.y), fabs(z.z)))" : measure));
@@ -105,6 +128,7 @@ std::string emit_chain(const Chain& c, const std::string& p, const codegen::deta
       w.line(fmt::format("{0} = SEL({0}, r0 - {1}, r0 > {2});", out, lit.real(ball), lit.real(2 * ball)));
       break;
     }
+    case Orbit::Gradient: emit_estimate_gradient(c, pl, p, lit, w, out); break;
     case Orbit::Trap: w.line(fmt::format("{} = trap;", out)); break;
     case Orbit::Escape: w.line(fmt::format("{} = n;", out)); break;
     case Orbit::Smooth:

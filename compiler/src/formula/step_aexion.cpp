@@ -41,6 +41,7 @@ void quadray_emit(const Step& st, EmitState& s) {
   s.w.close();
 }
 
+DualFactor quadray_dual(const Step&, EmitState&) { return {.f = "2.0f"}; }
 void quadray_eval(const Step& st, RefState& s) {
   double q[4];
   for (int k = 0; k < 4; ++k) q[k] = kAxis[k][0] * s.z[0] + kAxis[k][1] * s.z[1] + kAxis[k][2] * s.z[2];
@@ -90,6 +91,11 @@ void aexion_emit(const Step& st, EmitState& s) {
   s.w.close();
 }
 
+// f = 2|q| (grad 2 q / |q|), and 2 id added: the scalar estimate of a `de:` override
+DualFactor aexion_dual(const Step&, EmitState&) {
+  return {{"const real q = fmax(sqrt(v3_dot(z, z) + zw * zw), K(1e-20f));"},
+          "(2.0f * q)", "v3_scale(z, 2.0f / q)", "2.0f * zw / q", "2.0f * id"};
+}
 void aexion_eval(const Step& st, RefState& s) {
   const double q[4] = {s.z[0], s.z[1], s.z[2], s.w};
   double k[4];
@@ -118,10 +124,10 @@ extern const StepDef kQuadray{"quadray", {{"cadd", 1, {0}, false, -100, 100}}, a
                               quadray_eval,
                               "z to a 4-D z: its projections on the tetrahedron's four axes, made positive, plus cadd "
                               "(Aexion's first iteration); a 4-D step, conformal with factor 2",
-                              true};
+                              true, quadray_dual};
 extern const StepDef kAexion{"aexion", {{"cadd", 1, {0}, false, -100, 100}}, never_conformal, true, aexion_emit, aexion_eval,
                              "Aexion's square of the 4-D z plus c's quadray form (|cx + cy + cz| + cadd, ...) in place "
                              "of add_c; a 4-D step, not conformal (the chain runs the Jacobian)",
-                             true};
+                             true, aexion_dual};
 
 }  // namespace sdfc::formula

@@ -11,6 +11,7 @@
 namespace sdfc::formula {
 
 bool always_conformal(const Step&) { return true; }
+DualFactor keeps_dr(const Step&, EmitState&) { return {}; }
 
 void apply_rows(RefState& s, const std::array<double, 9>& m) {
   for (V3& c : s.j) c = {m[0] * c[0] + m[1] * c[1] + m[2] * c[2], m[3] * c[0] + m[4] * c[1] + m[5] * c[2],
@@ -57,6 +58,7 @@ void scale_emit(const Step& st, EmitState& s) {
   else
     s.w.line(fmt::format("dr = dr * {};", s.lit.real(std::fabs(k))));
 }
+DualFactor scale_dual(const Step& st, EmitState& s) { return {.f = s.lit.real(std::fabs(st.a[0]))}; }
 void scale_eval(const Step& st, RefState& s) {
   double k = st.a[0];
   for (int i = 0; i < 3; ++i) s.z[i] = s.z[i] * k - st.a[1 + i] * (k - 1);
@@ -78,6 +80,9 @@ void scale_xyz_emit(const Step& st, EmitState& s) {
   else
     s.w.line(fmt::format("dr = dr * {};",
                          s.lit.real(std::max({std::fabs(st.a[0]), std::fabs(st.a[1]), std::fabs(st.a[2])}))));
+}
+DualFactor scale_xyz_dual(const Step& st, EmitState& s) {
+  return {.f = s.lit.real(std::max({std::fabs(st.a[0]), std::fabs(st.a[1]), std::fabs(st.a[2])}))};
 }
 void scale_xyz_eval(const Step& st, RefState& s) {
   for (int i = 0; i < 3; ++i) s.z[i] *= st.a[i];
@@ -104,6 +109,7 @@ void add_c_emit(const Step&, EmitState& s) {
   else
     s.w.line("dr = dr + id;");
 }
+DualFactor add_c_dual(const Step&, EmitState&) { return {.adds = "id"}; }
 void add_c_eval(const Step&, RefState& s) {
   for (int i = 0; i < 3; ++i) s.z[i] += s.c[i];
   s.w += s.cw;
@@ -115,14 +121,15 @@ void add_c_eval(const Step&, RefState& s) {
 }  // namespace
 
 extern const StepDef kRotate{"rotate", {{"axis", 3, {0, 0, 1}}, {"angle", 1, {0}, true}}, always_conformal, false, rotate_emit,
-                             rotate_eval, "rotates by angle degrees about axis"};
+                             rotate_eval, "rotates by angle degrees about axis", false, keeps_dr};
 extern const StepDef kScale{"scale", {{"scale", 1, {2}, true}, {"offset", 3, {0, 0, 0}}}, always_conformal, false, scale_emit,
-                            scale_eval, "z = scale z - (scale - 1) offset (IFS form; offset 0: a plain scale)"};
+                            scale_eval, "z = scale z - (scale - 1) offset (IFS form; offset 0: a plain scale)", false,
+                            scale_dual};
 extern const StepDef kScaleXYZ{"scale_xyz", {{"scale", 3, {1, 1, 1}, true}}, scale_xyz_conformal, false, scale_xyz_emit,
-                               scale_xyz_eval, "a scale per axis (non-conformal unless the three agree)"};
+                               scale_xyz_eval, "a scale per axis (non-conformal unless the three agree)", false, scale_xyz_dual};
 extern const StepDef kTranslate{"translate", {{"offset", 3, {0, 0, 0}, true}}, always_conformal, false, translate_emit,
-                                translate_eval, "adds offset to z"};
+                                translate_eval, "adds offset to z", false, keeps_dr};
 extern const StepDef kAddC{"add_c", {}, always_conformal, false, add_c_emit, add_c_eval,
-                           "adds c: the point (Mandelbrot form) or the chain's julia constant"};
+                           "adds c: the point (Mandelbrot form) or the chain's julia constant", false, add_c_dual};
 
 }  // namespace sdfc::formula

@@ -115,6 +115,6 @@ bool expr_is_linear(const Step& st) {
 }
 
 extern const StepDef kExpr{"expr", {}, expr_conformal, true, expr_emit, expr_eval,
-                           "new x, y, z as expressions of x, y, z and cx, cy, cz"};
+                           "new x, y, z as expressions of x, y, z and cx, cy, cz", false, keeps_dr};
 
 }  // namespace sdfc::formula

@@ -61,6 +61,14 @@ void sphere_emit(const Step& st, EmitState& s) {
     s.w.line(fmt::format("z = fold_sphere(z, {}, {}, &dr);", m2, f2));
   }
 }
+// f = fixed_r2 / min_r2 inside, fixed_r2 / r2 in the shell (grad -2 f z / r2), 1 outside
+DualFactor sphere_dual(const Step& st, EmitState& s) {
+  std::string m2 = s.lit.real(st.a[0] * st.a[0]), f2 = s.lit.real(st.a[1] * st.a[1]);
+  return {{"const real q = fmax(v3_dot(z, z), K(1e-30f));",
+           fmt::format("const real f = SEL(SEL((real)(1.0f), {1} / q, q < {1}), {1} / {0}, q < {0});", m2, f2)},
+          "f",
+          fmt::format("v3_scale(z, SEL((real)(0.0f), -2.0f * f / q, (q >= {}) & (q < {})))", m2, f2)};
+}
 void sphere_eval(const Step& st, RefState& s) {
   double m2 = st.a[0] * st.a[0], f2 = st.a[1] * st.a[1];
   const V3 w = s.z;
@@ -103,10 +111,12 @@ void plane_emit(const Step& st, EmitState& s) {
   V3 n = unit(st);
   std::string nv = s.lit.vec3(n), off = s.lit.real(st.a[3]);
   if (s.jacobian) {
+    // Shift the plane to the origin, reflect, shift back; the negated offset is its own literal so a
+    // negative offset never prints as "--".
     s.used.insert("fold_reflect_j");
-    s.w.line(fmt::format("{{ mask side = v3_dot(z, {0}) > {1}; z = v3_mad(z, {0}, -{1}); fold_reflect_j({2}, {0}, side); "
+    s.w.line(fmt::format("{{ mask side = v3_dot(z, {0}) > {1}; z = v3_mad(z, {0}, {3}); fold_reflect_j({2}, {0}, side); "
                          "z = v3_mad(z, {0}, {1}); }}  // plane_fold",
-                         nv, off, jac_args()));
+                         nv, off, jac_args(), s.lit.real(-st.a[3])));
   } else {
     s.w.line(fmt::format("z = v3_mad(z, {0}, -2.0f * fmax(v3_dot(z, {0}) - {1}, K(0.0f)));  // plane_fold", nv, off));
   }
@@ -158,6 +168,7 @@ void menger_emit(const Step& st, EmitState& s) {
   else
     s.w.line(fmt::format("dr = dr * {};", s.lit.real(std::fabs(k))));
 }
+DualFactor menger_dual(const Step& st, EmitState& s) { return {.f = s.lit.real(std::fabs(st.a[0]))}; }
 void menger_eval(const Step& st, RefState& s) {
   octa_ref(s);
   double k = st.a[0], shift = st.a[3] * (k - 1);
@@ -171,21 +182,24 @@ void menger_eval(const Step& st, RefState& s) {
 }  // namespace
 
 extern const StepDef kBoxFold{"box_fold", {{"limit", 1, {1}, false, 1e-6, 1e6}}, always_conformal, false, box_emit, box_eval,
-                              "reflects each coordinate beyond +-limit back into the box"};
+                              "reflects each coordinate beyond +-limit back into the box", false, keeps_dr};
 extern const StepDef kSphereFold{"sphere_fold",
                                  {{"min_radius", 1, {0.5}, false, 1e-6, 1e6}, {"fixed_radius", 1, {1}, false, 1e-6, 1e6}},
                                  always_conformal, false, sphere_emit, sphere_eval,
-                                 "scales up inside min_radius, inverts in the fixed sphere between the radii"};
+                                 "scales up inside min_radius, inverts in the fixed sphere between the radii", false,
+                                 sphere_dual};
 extern const StepDef kAbs{"abs", {{"axes", 3, {1, 1, 1}, false, 0, 1}}, always_conformal, false, abs_emit, abs_eval,
-                          "the absolute value of the coordinates whose flag in axes is 1"};
+                          "the absolute value of the coordinates whose flag in axes is 1", false, keeps_dr};
 extern const StepDef kPlaneFold{"plane_fold", {{"normal", 3, {1, 0, 0}, true}, {"offset", 1, {0}}}, always_conformal, false,
-                                plane_emit, plane_eval, "reflects the side where z.normal > offset to the other side"};
+                                plane_emit, plane_eval, "reflects the side where z.normal > offset to the other side", false,
+                                keeps_dr};
 extern const StepDef kOctaFold{"octa_fold", {}, always_conformal, false, octa_emit, octa_eval,
-                               "the cube's symmetry: abs, then sorts x >= y >= z"};
+                               "the cube's symmetry: abs, then sorts x >= y >= z", false, keeps_dr};
 extern const StepDef kTetraFold{"tetra_fold", {}, always_conformal, false, tetra_emit, tetra_eval,
-                                "the tetrahedron's symmetry: reflects in x+y=0, x+z=0, y+z=0"};
+                                "the tetrahedron's symmetry: reflects in x+y=0, x+z=0, y+z=0", false, keeps_dr};
 extern const StepDef kMengerFold{"menger_fold", {{"scale", 1, {3}, false, 1.000001, 1e6}, {"offset", 3, {1, 1, 1}}},
                                  always_conformal, false, menger_emit, menger_eval,
-                                 "one Menger sponge step: octa_fold, scale about offset, folds the middle layer back"};
+                                 "one Menger sponge step: octa_fold, scale about offset, folds the middle layer back", false,
+                                 menger_dual};
 
 }  // namespace sdfc::formula

@@ -36,6 +36,11 @@ void hypercomplex_emit(const Step&, EmitState& s) {
   s.w.close();
 }
 
+// f = 2|q|: the scalar estimate of a `de:` override; grad 2 q / |q|
+DualFactor hypercomplex_dual(const Step&, EmitState&) {
+  return {{"const real q = fmax(sqrt(v3_dot(z, z) + zw * zw), K(1e-20f));"},
+          "(2.0f * q)", "v3_scale(z, 2.0f / q)", "2.0f * zw / q"};
+}
 void hypercomplex_eval(const Step&, RefState& s) {
   const double q[4] = {s.z[0], s.z[1], s.z[2], s.w};
   {  // the reference always carries the Jacobian
@@ -54,6 +59,6 @@ void hypercomplex_eval(const Step&, RefState& s) {
 extern const StepDef kHypercomplex{"hypercomplex", {}, never_conformal, true, hypercomplex_emit, hypercomplex_eval,
                                    "the square of x + y i + z j + w k as a commutative hypercomplex number; a 4-D step. "
                                    "Not conformal: the chain runs the Jacobian (the scalar 2|q| is only an estimate)",
-                                   true};
+                                   true, hypercomplex_dual};
 
 }  // namespace sdfc::formula

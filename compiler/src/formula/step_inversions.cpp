@@ -40,6 +40,12 @@ void invert_emit(const Step& st, EmitState& s) {
   s.w.line(fmt::format("z = v3_add({}, v3_scale(w, f));", ctr));
   s.w.close();
 }
+// f = R^2 / |w|^2 with w = z - centre: grad f = -2 f w / |w|^2
+DualFactor invert_dual(const Step& st, EmitState& s) {
+  return {{fmt::format("const vec3 w = v3_sub(z, {});", s.lit.vec3({st.a[1], st.a[2], st.a[3]})),
+           "const real q = fmax(v3_dot(w, w), K(1e-30f));", fmt::format("const real f = {} / q;", s.lit.real(st.a[0] * st.a[0]))},
+          "f", "v3_scale(w, -2.0f * f / q)"};
+}
 void invert_eval(const Step& st, RefState& s) {
   V3 w{s.z[0] - st.a[1], s.z[1] - st.a[2], s.z[2] - st.a[3]};
   double q = std::max(w[0] * w[0] + w[1] * w[1] + w[2] * w[2], 1e-30), f = st.a[0] * st.a[0] / q;
@@ -63,6 +69,13 @@ void kleinian_emit(const Step& st, EmitState& s) {
   }
   s.w.line("z = v3_scale(z, k);");
   s.w.close();
+}
+// f = k + de_tweak, k = max(min_r2 / |z|^2, 1): grad -2 k z / |z|^2 inside the sphere
+DualFactor kleinian_dual(const Step& st, EmitState& s) {
+  const std::string m2 = s.lit.real(st.a[0]);
+  return {{"const real q = fmax(v3_dot(z, z), K(1e-30f));", fmt::format("const real k = fmax({} / q, K(1.0f));", m2)},
+          fmt::format("(k + {})", s.lit.real(st.a[1])),
+          fmt::format("v3_scale(z, SEL((real)(0.0f), -2.0f * k / q, q < {}))", m2)};
 }
 void kleinian_eval(const Step& st, RefState& s) {
   const V3 w = s.z;
@@ -100,14 +113,16 @@ void surf_eval(const Step& st, RefState& s) {
 extern const StepDef kSphericalInvert{"spherical_invert",
                                       {{"radius", 1, {1}, false, 1e-6, 1e6}, {"centre", 3, {0, 0, 0}}},
                                       always_conformal, false, invert_emit, invert_eval,
-                                      "inverts z in the sphere of radius about centre"};
+                                      "inverts z in the sphere of radius about centre", false, invert_dual};
 extern const StepDef kKleinianFold{"kleinian_fold",
                                    {{"min_r2", 1, {0.5}, false, 1e-6, 1e6}, {"de_tweak", 1, {0}, false, 0, 10}},
                                    always_conformal, false, kleinian_emit, kleinian_eval,
-                                   "inverts z in the sphere r^2 = min_r2 when inside it (the pseudo-Kleinian's fold)"};
+                                   "inverts z in the sphere r^2 = min_r2 when inside it (the pseudo-Kleinian's fold)", false,
+                                   kleinian_dual};
 extern const StepDef kSurfFold{"surf_fold",
                                {{"limit", 3, {1, 1, 1}, false, 1e-6, 1e6}, {"axes", 3, {1, 1, 0}, false, 0, 1}},
                                always_conformal, false, surf_emit, surf_eval,
-                               "|z + limit| - |z - limit| - z on the axes whose flag is 1 (the Amazing Surf fold)"};
+                               "|z + limit| - |z - limit| - z on the axes whose flag is 1 (the Amazing Surf fold)", false,
+                               keeps_dr};
 
 }  // namespace sdfc::formula

@@ -134,6 +134,7 @@ extern const StepDef kPolyhedralFold{
       {"tetrahedron", "cube", "octahedron", "dodecahedron", "octahedron_cube", "icosahedron", "hexagonal_prism",
        "pentagonal_prism"}}},
     always_conformal, false, fold_emit, fold_eval,
-    "folds z into a polyhedron (face, edge or corner reflection), Mandelbulber's generalized box fold"};
+    "folds z into a polyhedron (face, edge or corner reflection), Mandelbulber's generalized box fold", false,
+    keeps_dr};
 
 }  // namespace sdfc::formula

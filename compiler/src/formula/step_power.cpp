@@ -29,6 +29,13 @@ void bulb_emit(const Step& st, EmitState& s) {
   }
 }
 
+// f = n r^(n-1): grad n (n-1) r^(n-3) z
+DualFactor bulb_dual(const Step& st, EmitState& s) {
+  const std::string n = s.lit.real(st.a[0]);
+  return {{"const real r = fmax(v3_length(z), K(1e-20f));", fmt::format("const real f = {0} * pow(r, {0} - 1.0f);", n)},
+          "f",
+          fmt::format("v3_scale(z, f * ({} - 1.0f) / (r * r))", n)};
+}
 void bulb_eval(const Step& st, RefState& s) {
   const double n = st.a[0];
   const V3 z = s.z;
@@ -52,6 +59,6 @@ void bulb_eval(const Step& st, RefState& s) {
 }  // namespace
 
 extern const StepDef kBulbPower{"bulb_power", {{"power", 1, {8}, false, 1.000001, 64}}, always_conformal, true, bulb_emit,
-                                bulb_eval, "z to the power in spherical coordinates (the Mandelbulb's step)"};
+                                bulb_eval, "z to the power in spherical coordinates (the Mandelbulb's step)", false, bulb_dual};
 
 }  // namespace sdfc::formula

@@ -51,6 +51,12 @@ void quaternion_emit(const Step& st, EmitState& s) {
   s.w.close();
 }
 
+// f = 2|q| (grad 2 q / |q|) or 3|q|^2 (grad 6 q)
+DualFactor quaternion_dual(const Step& st, EmitState&) {
+  if (st.a[0] == 3) return {{}, "(3.0f * (v3_dot(z, z) + zw * zw))", "v3_scale(z, 6.0f)", "6.0f * zw"};
+  return {{"const real q = fmax(sqrt(v3_dot(z, z) + zw * zw), K(1e-20f));"},
+          "(2.0f * q)", "v3_scale(z, 2.0f / q)", "2.0f * zw / q"};
+}
 void quaternion_eval(const Step& st, RefState& s) {
   const bool cube = st.a[0] == 3;
   const double a = s.z[0], v[3] = {s.z[1], s.z[2], s.w}, vv = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
@@ -77,6 +83,6 @@ extern const StepDef kQuaternion{"quaternion", {{"power", 1, {2}, false, 2, 3}},
                                  quaternion_eval,
                                  "q -> q^power (2 or 3) for the quaternion x + y i + z j + w k; a 4-D step. Its scalar "
                                  "derivative 2|q| (3|q|^2) is the built-in julia's, a bound on the true stretch",
-                                 true};
+                                 true, quaternion_dual};
 
 }  // namespace sdfc::formula

@@ -98,8 +98,10 @@ void icosa_eval(const Step&, RefState& s) {
 }  // namespace
 
 extern const StepDef kPolyfold{"polyfold", {{"order", 1, {3}, false, 1, 64}}, always_conformal, false, poly_emit, poly_eval,
-                               "folds z.xy into one sector of angle 360/order degrees about the z axis, mirrored"};
+                               "folds z.xy into one sector of angle 360/order degrees about the z axis, mirrored",
+                               false, keeps_dr};
 extern const StepDef kIcosaFold{"icosa_fold", {}, always_conformal, false, icosa_emit, icosa_eval,
-                                "the icosahedron's symmetry: abs and reflections in its golden-ratio planes"};
+                                "the icosahedron's symmetry: abs and reflections in its golden-ratio planes", false,
+                                keeps_dr};
 
 }  // namespace sdfc::formula

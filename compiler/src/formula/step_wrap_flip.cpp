@@ -59,11 +59,13 @@ void flip_eval(const Step& st, RefState& s) {
 extern const StepDef kWrap{"wrap",
                            {{"period", 3, {2, 2, 2}, false, 1e-6, 1e6}, {"start", 3, {-1, -1, -1}}},
                            always_conformal, false, wrap_emit, wrap_eval,
-                           "moves each coordinate by whole periods into [start, start + period) (a lattice of cells)"};
+                           "moves each coordinate by whole periods into [start, start + period) (a lattice of cells)",
+                           false, keeps_dr};
 extern const StepDef kKleinianFlip{"kleinian_flip",
                                    {{"height", 1, {2}, false, 1e-6, 1e6}, {"shift", 1, {0}}, {"width", 1, {1}, false, 1e-6, 1e6}},
                                    always_conformal, false, flip_emit, flip_eval,
                                    "above y = height (0.5 + 0.2 sin(sign(shift) pi (x + shift/2) / width)) turns z half "
-                                   "round (-shift/2, height/2, 0) (Jos Leys' Kleinian)"};
+                                   "round (-shift/2, height/2, 0) (Jos Leys' Kleinian)",
+                                   false, keeps_dr};
 
 }  // namespace sdfc::formula

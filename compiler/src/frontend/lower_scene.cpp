@@ -203,6 +203,15 @@ void check_dual_normals(ValueReader& r, const MapReader& top, const ir::Graph& g
                      "use 'normals: tetrahedral' or 'normals: central' for an animated scene");
       return;
     }
+    const kinds::Description* d = kinds::find(n.kind);
+    const std::string blocked = d && d->dual_normals && d->dual_blocker ? d->dual_blocker(n) : "";
+    if (!blocked.empty()) {
+      r.sink().error(at->loc,
+                     fmt::format("render.normals: dual cannot differentiate '{}' (line {}): {}", scene_name(n), n.loc.line,
+                                 blocked),
+                     "use 'normals: tetrahedral' or 'normals: central' for this scene");
+      return;
+    }
     if (ir::supports_dual_normals(n.kind)) continue;
     r.sink().error(at->loc,
                    fmt::format("render.normals: dual needs dual-number derivatives, which '{}' (line {}) does not have; "

@@ -108,6 +108,12 @@ std::string emit_orbit(Emitter& e) {
                              e.shape ? codegen::detail::trap_measure_call(*e.shape, "z", e.used) : "");
 }
 
+std::string emit_dual(Emitter& e) {
+  return formula::emit_chain(chain_of(e.n), e.p, e.lit, e.w, e.used, formula::Orbit::Gradient);
+}
+
+std::string dual_blocker(const ir::Node& n) { return formula::dual_blocker(chain_of(n)); }
+
 reference::OrbitColour orbit_colour(const ir::Node& n, const V3& p, const ir::TrapShape& shape) {
   const formula::Chain& c = chain_of(n);
   formula::OrbitResult o = formula::evaluate(c, p, [&](const V3& z) { return orbit::measure(shape, z); });
@@ -145,7 +151,8 @@ extern const Description Formula{
     .kind = ir::Kind::Formula, .yaml = "formula",
     .example = "{formula: {iterations: 10, iterate: [box_fold, sphere_fold, {scale: -1.8}, add_c]}}",
     .param_count = count_of<FormulaP>(), .lower = lower, .props = props, .call_args = "", .distance = distance,
-    .emit = emit, .emit_orbit = emit_orbit, .orbit_colour = orbit_colour, .de_summary = de_summary,
+    .dual_normals = true, .emit = emit, .emit_orbit = emit_orbit, .emit_dual = emit_dual, .dual_blocker = dual_blocker,
+    .orbit_colour = orbit_colour, .de_summary = de_summary,
     .bounds_trust = 0.5,  // the bailout ball is loose: passes/fractal_bounds searches with the estimate
     .bounds_distance = bounds_distance,
     .summary = "a fractal written as a chain of steps, its distance estimate derived from them",

@@ -92,7 +92,7 @@ vec3 scene_normal_dual(vec3 p)
     vec3 g2;
     real d1 = sdg_box(p0, v3(6.0f, 6.0f, 0.05f), 0.0f, &g2);  // box
     real d3 = de_mandelbulb_int(p, 8, 10, 2.0f, 1.1040895f, 0, v3_splat(0.0f));  // mandelbulb
-    vec3 g4 = deg_mandelbulb(p, 8.0f, 10, 2.0f, 0, v3_splat(0.0f));  // the direction of grad |z_n|
+    vec3 g4 = deg_mandelbulb(p, 8.0f, 10, 2.0f, 0, v3_splat(0.0f));  // the normal's direction
     real d5 = d1;  // union
     vec3 g6 = g2;
     g6 = v3_select(g6, g4, d3 < d5);

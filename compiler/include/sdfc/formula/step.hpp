@@ -56,7 +56,25 @@ struct EmitState {
   bool jacobian;
   int fresh = 0;  // names temporaries
   bool four_d = false;
+  // render.normals: dual: the scalar derivative dr and its gradient gdr run
+  // beside the Jacobian (jacobian is true too); each step's `dual` rule
+  // updates them before the step's own code.
+  bool dual = false;
   std::string tmp(const char* base) { return base + std::to_string(fresh++); }
+};
+
+// render.normals: dual: how a step changes the scalar derivative,
+// dr <- f dr + adds, as expressions of z (and zw) as the step receives it,
+// with f's gradient in z (and w); "" stands for f = 1, a zero gradient and
+// nothing added. The emitter carries grad dr through the Jacobian:
+// grad f = J^T grad_z + grad_w jw. `temps`: statements the expressions need
+// (written in a block of their own).
+struct DualFactor {
+  std::vector<std::string> temps = {};
+  std::string f = "";
+  std::string grad_z = "";
+  std::string grad_w = "";
+  std::string adds = "";
 };
 
 struct StepDef {
@@ -70,6 +88,9 @@ struct StepDef {
   void (*eval)(const Step&, RefState&);
   std::string_view what;  // one line for the docs and `sdfc check`
   bool four_d = false;    // reads or writes w: the chain carries a 4-D z
+  // render.normals: dual: its rule for the scalar derivative (null: a chain
+  // with this step has no dual normals).
+  DualFactor (*dual)(const Step&, EmitState&) = nullptr;
 };
 
 const std::vector<const StepDef*>& steps();  // every step, by name
@@ -77,6 +98,8 @@ const StepDef* find_step(std::string_view name);
 
 // Shared helpers of the step files.
 bool always_conformal(const Step&);
+// The dual rule of a step that keeps dr (reflections, rotations, translations).
+DualFactor keeps_dr(const Step&, EmitState&);
 // Applies the linear map `m` (row-major) to every Jacobian column.
 void apply_rows(RefState& s, const std::array<double, 9>& m);
 // 4-D steps (step_four_d.cpp): the 4x4 Jacobian `m` of the step (row-major

@@ -13,8 +13,8 @@ inline bool supports_dual_normals(Kind k) {
 }
 
 inline const char* dual_normal_kinds() {
-  return "sphere, box, torus, plane, cylinder, capsule, mandelbulb (and its julia form), mandelbox, julia and the "
-         "combinators and modifiers";
+  return "sphere, box, torus, plane, cylinder, capsule, mandelbulb (and its julia form), mandelbox, julia, "
+         "formulas whose estimate uses the scalar derivative, and the combinators and modifiers";
 }
 
 }  // namespace sdfc::ir

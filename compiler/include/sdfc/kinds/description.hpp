@@ -87,8 +87,12 @@ struct Description {
   // The orbit's value the emitter asks for (trap, smooth count or escape
   // step; see codegen's OrbitValue) at its point.
   std::string (*emit_orbit)(Emitter&) = nullptr;
-  // render.normals: dual: the expression of the direction of grad |z_n|.
+  // render.normals: dual: writes any statements and returns the expression
+  // of the estimate's gradient (its direction is the normal).
   std::string (*emit_dual)(Emitter&) = nullptr;
+  // render.normals: dual on a kind whose support depends on the node (a
+  // formula's steps): why this node cannot be differentiated, "" if it can.
+  std::string (*dual_blocker)(const ir::Node&) = nullptr;
   // The double-precision orbit trap and smooth iteration count.
   reference::OrbitColour (*orbit_colour)(const ir::Node&, const V3& p, const ir::TrapShape& shape) = nullptr;
   // What `sdfc check` says of the estimator ("de: analytic, bound in practice ...").
