@@ -18,6 +18,21 @@ void julia(const PresetArgs& a, ChainBuilder& b) {
   ch.w_start = a.n("slice");
 }
 
+bool within(double v, double lo, double hi) { return v >= lo && v <= hi; }
+
+// The built-in julia: draws the same set with its own code when its ranges
+// hold (c and the slice within +-4, bailout up to 1e3) and de is left to the compiler.
+std::optional<KindNode> julia_kind(const PresetArgs& a, const Chain& c) {
+  const std::array<double, 4> q{c.c[0], c.c[1], c.c[2], c.cw};
+  if (c.de != DeChoice::Auto || !c.julia || !within(c.bailout, 1, 1e3) || c.iterations > 1000 ||
+      !within(c.w_start, -4, 4))
+    return std::nullopt;
+  for (double x : q)
+    if (!within(x, -4, 4)) return std::nullopt;
+  return KindNode{"julia", {{"c", {q[0], q[1], q[2], q[3]}}, {"degree", {a.n("degree")}},
+                            {"iterations", {double(c.iterations)}}, {"slice", {c.w_start}}, {"bailout", {c.bailout}}}};
+}
+
 // Mandelbulber's Quaternion: q -> q^2 + c, c the point with w 0.
 void quaternion(const PresetArgs&, ChainBuilder& b) {
   b.add("quaternion", {2});
@@ -45,7 +60,7 @@ extern const Preset kJuliaPreset{
     {{"c", 4, {-0.2, 0.6, 0.2, 0.2}, -4, 4, "the quaternion constant: real part, i, j, k"},
      {"degree", 1, {2}, 2, 3, "the power, 2 or 3"},
      {"slice", 1, {0}, -4, 4, "w (the k part) of the 3-D slice through the 4-D set"}},
-    12, 4, julia, "julia"};
+    12, 4, julia, "julia", julia_kind};
 extern const Preset kQuaternionPreset{"quaternion", "Mandelbulber's Quaternion: q -> q^2 + c, c the point (w 0)", {}, 10,
                                       10, quaternion};
 extern const Preset kHypercomplexPreset{
