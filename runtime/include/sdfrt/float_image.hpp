@@ -16,6 +16,13 @@ struct FloatImage {
   FloatImage() = default;
   // Zero-filled image; throws std::invalid_argument on non-positive sizes.
   FloatImage(int width, int height, std::vector<std::string> plane_names);
+  // Large planes are handed back for the next image when one is dropped
+  // (float_image.cpp says why); copies and moves are as usual.
+  FloatImage(const FloatImage&) = default;
+  FloatImage(FloatImage&&) noexcept = default;
+  FloatImage& operator=(const FloatImage&) = default;
+  FloatImage& operator=(FloatImage&& other) noexcept;
+  ~FloatImage();
 
   int planes() const noexcept { return static_cast<int>(plane_names.size()); }
   std::size_t plane_size() const noexcept {
