@@ -75,7 +75,7 @@ int run_compile(const CompileArgs& a) {
       &tm);
   auto t1 = std::chrono::steady_clock::now();
   codegen::EmittedKernel k;
-  if (a.emit == "cl" || a.stats) k = codegen::emit_opencl(m, {a.simd_width > 0 ? a.simd_width : default_simd_width(true), false, false, a.packet_rows});
+  if (a.emit == "cl" || a.stats) k = codegen::emit_opencl(m, {.simd_width = a.simd_width > 0 ? a.simd_width : default_simd_width(true), .packet_rows = a.packet_rows});
   double emit_ms = ms(t1);
   if (a.emit == "ir" && a.dump_after.empty()) out += ir::print(m);
   if (a.emit == "cl") out += k.source;

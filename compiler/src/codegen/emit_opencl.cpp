@@ -115,6 +115,7 @@ EmittedKernel emit_opencl(const ir::Module& m, const EmitOptions& opt) {
   k.packet_rows = rows;
   k.planes.assign(abi::kImagePlanes.begin(), abi::kImagePlanes.end());
   if (opt.aovs) k.planes.insert(k.planes.end(), abi::kAovPlanes.begin(), abi::kAovPlanes.end());
+  else if (opt.steps_plane) k.planes.emplace_back("steps");
   if (opt.aovs && path) k.planes.insert(k.planes.end(), abi::kPathAovPlanes.begin(), abi::kPathAovPlanes.end());
   k.frame_floats = abi::kFrameFloats + m.unlocked;
   k.scene_data = detail::scene_data(m);

@@ -215,6 +215,10 @@ std::string render_kernel(const ir::Module& m, const Literals& lit, std::set<std
       store("albedo_g", "albedo.y");
       store("albedo_b", "albedo.z");
     }
+  } else if (opt.steps_plane) {
+    w.line("(void)normal; (void)mat;");
+    w.line(fmt::format("STORE_PACKET(steps, o + {} * plane, out_stride);  // steps, the only AOV plane here",
+                       abi::kImagePlanes.size()));
   } else {
     w.line("(void)normal; (void)mat; (void)steps;");
   }

@@ -24,6 +24,7 @@ struct EmitOptions {
   int packet_rows = 0;
   bool alpha = false;   // a camera ray that misses adds no colour: the colour is premultiplied by the hit plane
   bool linear = false;  // store the linear colour (after exposure, before the tone curve and gamma), for EXR
+  bool steps_plane = false;  // without aovs: store only the steps plane after r, g, b, depth (the viewer's overlay)
 };
 
 struct EmittedKernel {
