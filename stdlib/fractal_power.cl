@@ -116,6 +116,19 @@ inline vec3 fold_bulb_int(vec3 z, int n, real* r_pow_n_minus_1)
     return bulb_power_int_r(z, v3_length(z), n, r_pow_n_minus_1);
 }
 
+//! fn fold_hybrid_bulb_int
+//! deps: vec3_ops, fold_bulb_int
+//! class: helper
+// fold_hybrid_bulb for a whole power n, without trigonometry: one Mandelbulb
+// step of a hybrid orbit, z <- z^n + c, dr <- n r^(n-1) dr + 1.
+inline vec3 fold_hybrid_bulb_int(vec3 z, int n, vec3 c, real* dr)
+{
+    real rn1;
+    vec3 zn = fold_bulb_int(z, n, &rn1);
+    *dr = rn1 * (real)n * *dr + 1.0f;
+    return v3_add(zn, c);
+}
+
 //! fn de_mandelbulb_int
 //! deps: vec3_ops, fold_bulb_int
 //! class: estimate

@@ -15,7 +15,7 @@ real scene_dist(TIME_PARAM vec3 p)
                 const int k = i % 3;  // the same step for every lane
                 real dr_next = dr;
                 vec3 z_next;
-                if (k < 1) z_next = fold_hybrid_bulb(z, 8.0f, p, &dr_next);  // mandelbulb power 8
+                if (k < 1) z_next = fold_hybrid_bulb_int(z, 8, p, &dr_next);  // mandelbulb power 8
                 else z_next = fold_hybrid_box(z, 2.0f, 0.25f, 1.0f, 1.0f, p, &dr_next);  // mandelbox scale 2
                 z = v3_select(z, z_next, alive);
                 dr = SEL(dr, dr_next, alive);
@@ -52,7 +52,7 @@ real scene_dist_mat(TIME_PARAM vec3 p, real* mat)
                 const int k = i % 3;  // the same step for every lane
                 real dr_next = dr;
                 vec3 z_next;
-                if (k < 1) z_next = fold_hybrid_bulb(z, 8.0f, p, &dr_next);  // mandelbulb power 8
+                if (k < 1) z_next = fold_hybrid_bulb_int(z, 8, p, &dr_next);  // mandelbulb power 8
                 else z_next = fold_hybrid_box(z, 2.0f, 0.25f, 1.0f, 1.0f, p, &dr_next);  // mandelbox scale 2
                 z = v3_select(z, z_next, alive);
                 dr = SEL(dr, dr_next, alive);
@@ -91,7 +91,7 @@ real scene_trap(TIME_PARAM vec3 p)
                 const int k = i % 3;  // the same step for every lane
                 real dr_next = dr;
                 vec3 z_next;
-                if (k < 1) z_next = fold_hybrid_bulb(z, 8.0f, p, &dr_next);  // mandelbulb power 8
+                if (k < 1) z_next = fold_hybrid_bulb_int(z, 8, p, &dr_next);  // mandelbulb power 8
                 else z_next = fold_hybrid_box(z, 2.0f, 0.25f, 1.0f, 1.0f, p, &dr_next);  // mandelbox scale 2
                 z = v3_select(z, z_next, alive);
                 dr = SEL(dr, dr_next, alive);
@@ -115,7 +115,7 @@ real scene_trap(TIME_PARAM vec3 p)
                 const int k = i % 3;
                 vec3 z_next;
                 real g, law;
-                if (k < 1) { z_next = fold_hybrid_bulb(z, 8.0f, p, &dr); g = 8.0f; law = 1.0f; }
+                if (k < 1) { z_next = fold_hybrid_bulb_int(z, 8, p, &dr); g = 8.0f; law = 1.0f; }
                 else { z_next = fold_hybrid_box(z, 2.0f, 0.25f, 1.0f, 1.0f, p, &dr); g = 2.0f; law = 0.0f; }
                 z = v3_select(z, z_next, alive);
                 n = SEL(n, n + 1.0f, alive);
