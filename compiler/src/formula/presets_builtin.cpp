@@ -43,7 +43,6 @@ void kifs(const PresetArgs& a, ChainBuilder& b) {
 }
 
 using Kind = std::optional<KindNode>;
-bool within(double v, double lo, double hi) { return v >= lo && v <= hi; }
 bool all_within(const std::array<double, 3>& v, double lo, double hi) {
   return within(v[0], lo, hi) && within(v[1], lo, hi) && within(v[2], lo, hi);
 }

@@ -18,8 +18,6 @@ void julia(const PresetArgs& a, ChainBuilder& b) {
   ch.w_start = a.n("slice");
 }
 
-bool within(double v, double lo, double hi) { return v >= lo && v <= hi; }
-
 // The built-in julia: draws the same set with its own code when its ranges
 // hold (c and the slice within +-4, bailout up to 1e3) and de is left to the compiler.
 std::optional<KindNode> julia_kind(const PresetArgs& a, const Chain& c) {

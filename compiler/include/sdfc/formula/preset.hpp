@@ -73,4 +73,7 @@ struct Preset {
 const std::vector<const Preset*>& presets();  // every preset, by name
 const Preset* find_preset(std::string_view name);
 
+// lo <= v <= hi: the as_builtin functions' test of a kind's range.
+inline bool within(double v, double lo, double hi) { return v >= lo && v <= hi; }
+
 }  // namespace sdfc::formula
