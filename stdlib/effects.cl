@@ -44,7 +44,7 @@ inline mask march_sphere_trace_closest(TIME_PARAM vec3 ro, vec3 rd, real t0, rea
     real n = 0.0f;
     real c = (real)(1e30f);
     for (int i = 0; i < max_steps && M_ANY(active); ++i) {
-        real d = scene_dist(TIME_ARG v3_mad(ro, rd, t));
+        real d = scene_dist_inline(TIME_ARG v3_mad(ro, rd, t));
         c = SEL(c, fmin(c, d), active);
         mask now_hit = active & (d < hit_eps * pixel_angle * fmax(t, K(1e-4f)));
         hit = hit | now_hit;
@@ -72,7 +72,7 @@ inline real shadow_hard(TIME_PARAM vec3 p, vec3 l, real tmin, real tmax, real ep
     real lit = 1.0f;
     real t = tmin;
     for (int i = 0; i < max_steps && M_ANY(active); ++i) {
-        real d = scene_dist(TIME_ARG v3_mad(p, l, t));
+        real d = scene_dist_inline(TIME_ARG v3_mad(p, l, t));
         mask blocked = active & (d < eps);
         lit = SEL(lit, (real)(0.0f), blocked);
         active = active & !blocked;
@@ -101,12 +101,17 @@ inline real shadow_soft(TIME_PARAM vec3 p, vec3 l, real tmin, real tmax, real k,
     real res = 1.0f;
     real t = tmin;
     for (int i = 0; i < max_steps && M_ANY(active); ++i) {
-        real d = scene_dist(TIME_ARG v3_mad(p, l, t));
+        real d = scene_dist_inline(TIME_ARG v3_mad(p, l, t));
         res = SEL(res, fmin(res, k * d / t), active);
         res = SEL(res, (real)(0.0f), active & (d < eps));
         active = active & (d >= eps) & (res > 0.002f);
         real cap = fmax(0.25f * t, 4.0f * min_step);
-        t = SEL(t, t + clamp(d, min_step, cap), active);
+        // Within s of here the distance is at least d - s, so k * d / t stays
+        // at or above res for any s up to (k d - res t) / (k + res): such a
+        // step cannot lower the minimum, and rays leaving the surface in the
+        // open take it whole (res <= 1 makes k + 1 a safe divisor, a constant).
+        real skip = (k * d - res * t) * (1.0f / (k + 1.0f));
+        t = SEL(t, t + clamp(d, min_step, fmax(cap, skip)), active);
         active = active & (t < tmax);
     }
     return clamp(res, K(0.0f), K(1.0f));

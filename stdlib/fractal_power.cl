@@ -143,17 +143,21 @@ inline __attribute__((always_inline)) real de_mandelbulb_int(vec3 p, int power, 
     real dr_add = julia ? 0.0f : 1.0f;
     vec3 z = p;
     real dr = 1.0f;
-    real r = v3_length(z);
-    mask alive = r < bailout;
+    // The bailout test compares squares: the square root then feeds only the
+    // derivative, and the orbit's next step need not wait for it.
+    const real bailout2 = bailout * bailout;
+    real r2 = v3_dot(z, z);
+    mask alive = r2 < bailout2;
     for (int i = 0; i < iterations && M_ANY(alive); ++i) {
         real rn1;
-        vec3 z_next = v3_add(bulb_power_int_r(z, r, power, &rn1), add);
+        vec3 z_next = v3_add(bulb_power_int_r(z, sqrt(r2), power, &rn1), add);
         real dr_next = rn1 * (real)((scalar)power) * dr + dr_add;
         z = v3_select(z, z_next, alive);
         dr = SEL(dr, dr_next, alive);
-        r = v3_length(z);
-        alive = alive & (r < bailout);
+        r2 = v3_dot(z, z);
+        alive = alive & (r2 < bailout2);
     }
+    real r = sqrt(r2);
     real de = 0.5f * log(fmax(r, K(1e-20f))) * r / dr;
     real r0 = v3_length(p);
     return SEL(de, r0 - set_radius, r0 > 1.5f * set_radius);

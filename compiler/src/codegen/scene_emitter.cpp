@@ -52,9 +52,17 @@ std::string emit_scene_iterations(const ir::Module& m, const Literals& lit, std:
 
 std::string emit_scene_functions(const ir::Module& m, const Literals& lit, std::set<std::string>& used) {
   used.insert("vec3_ops");
-  std::string out = "// ---- scene distance: the march evaluates this at every step ----\n";
-  out += function(m, lit, used, Carry::Distance, "real scene_dist(TIME_PARAM vec3 p)",
+  // The marching loops (primary, shadow, glass) take the distance inline:
+  // called, every live vector of the loop is saved and restored around the
+  // call (a 1280x720 Mandelbulb frame: 86 ms against 96). Normals, AO and the
+  // rest call one out-of-line copy, so the kernel holds the distance twice
+  // or so, not once per call site (a cold build +130 ms, not +260 ms).
+  std::string out = "// ---- scene distance: the marching loops inline this at every step ----\n";
+  out += function(m, lit, used, Carry::Distance,
+                  "inline __attribute__((always_inline)) real scene_dist_inline(TIME_PARAM vec3 p)",
                   [](CodeWriter& w, const kinds::Carried& v) { w.line("return " + v.d + ";"); });
+  out += "\n// ---- scene distance, called: every use outside the marching loops ----\n";
+  out += "__attribute__((noinline)) real scene_dist(TIME_PARAM vec3 p) { return scene_dist_inline(TIME_ARG p); }\n";
   out += "\n// ---- scene distance with material: evaluated once per hit ----\n";
   out += function(m, lit, used, Carry::Material, "real scene_dist_mat(TIME_PARAM vec3 p, real* mat)",
                   [](CodeWriter& w, const kinds::Carried& v) {
