@@ -263,12 +263,13 @@ TEST(Viewer, AStillFrameIsAbandonedBetweenTilesWhenInputArrives) {
   const ir::Camera cam = scene.module().plan.camera;
   int asked = 0;
   auto after_two_tiles = [&] { return ++asked > 2; };
-  EXPECT_FALSE(scene.render_interruptible(cam, 300, 150, 0.0, 0, 0, after_two_tiles).has_value());
+  // 600x300: six tiles of the CPU's 256 pixels (more of other devices' 128x64).
+  EXPECT_FALSE(scene.render_interruptible(cam, 600, 300, 0.0, 0, 0, after_two_tiles).has_value());
   EXPECT_EQ(asked, 3);  // asked before the first tile, after the first and after the second
   auto never = [] { return false; };
-  auto full = scene.render_interruptible(cam, 300, 150, 0.0, 0, 0, never);
+  auto full = scene.render_interruptible(cam, 600, 300, 0.0, 0, 0, never);
   ASSERT_TRUE(full.has_value());
-  EXPECT_EQ(sdfrt::to_rgb8(*full), sdfrt::to_rgb8(scene.render(cam, 300, 150, 0.0)));
+  EXPECT_EQ(sdfrt::to_rgb8(*full), sdfrt::to_rgb8(scene.render(cam, 600, 300, 0.0)));
 }
 
 // `sdfc view --benchmark` through the real binary: the built-in orbit for a
