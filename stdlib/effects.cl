@@ -100,6 +100,7 @@ inline real shadow_soft(TIME_PARAM vec3 p, vec3 l, real tmin, real tmax, real k,
 {
     real res = 1.0f;
     real t = tmin;
+    const real inv_k1 = 1.0f / (k + 1.0f);  // for the whole steps below
     for (int i = 0; i < max_steps && M_ANY(active); ++i) {
         real d = scene_dist_inline(TIME_ARG v3_mad(p, l, t));
         res = SEL(res, fmin(res, k * d / t), active);
@@ -109,8 +110,9 @@ inline real shadow_soft(TIME_PARAM vec3 p, vec3 l, real tmin, real tmax, real k,
         // Within s of here the distance is at least d - s, so k * d / t stays
         // at or above res for any s up to (k d - res t) / (k + res): such a
         // step cannot lower the minimum, and rays leaving the surface in the
-        // open take it whole (res <= 1 makes k + 1 a safe divisor, a constant).
-        real skip = (k * d - res * t) * (1.0f / (k + 1.0f));
+        // open take it whole (res <= 1 makes k + 1 a safe divisor, known
+        // before the loop).
+        real skip = (k * d - res * t) * inv_k1;
         t = SEL(t, t + clamp(d, min_step, fmax(cap, skip)), active);
         active = active & (t < tmax);
     }
