@@ -44,7 +44,7 @@ inline mask march_sphere_trace_closest(TIME_PARAM vec3 ro, vec3 rd, real t0, rea
     real n = 0.0f;
     real c = (real)(1e30f);
     for (int i = 0; i < max_steps && M_ANY(active); ++i) {
-        real d = scene_dist_inline(TIME_ARG v3_mad(ro, rd, t));
+        real d = scene_dist_inline(TIME_ARG v3_mad(ro, rd, t), active);
         c = SEL(c, fmin(c, d), active);
         mask now_hit = active & (d < hit_eps * pixel_angle * fmax(t, K(1e-4f)));
         hit = hit | now_hit;
@@ -72,7 +72,7 @@ inline real shadow_hard(TIME_PARAM vec3 p, vec3 l, real tmin, real tmax, real ep
     real lit = 1.0f;
     real t = tmin;
     for (int i = 0; i < max_steps && M_ANY(active); ++i) {
-        real d = scene_dist_inline(TIME_ARG v3_mad(p, l, t));
+        real d = scene_dist_inline(TIME_ARG v3_mad(p, l, t), active);
         mask blocked = active & (d < eps);
         lit = SEL(lit, (real)(0.0f), blocked);
         active = active & !blocked;
@@ -102,7 +102,7 @@ inline real shadow_soft(TIME_PARAM vec3 p, vec3 l, real tmin, real tmax, real k,
     real t = tmin;
     const real inv_k1 = 1.0f / (k + 1.0f);  // for the whole steps below
     for (int i = 0; i < max_steps && M_ANY(active); ++i) {
-        real d = scene_dist_inline(TIME_ARG v3_mad(p, l, t));
+        real d = scene_dist_inline(TIME_ARG v3_mad(p, l, t), active);
         res = SEL(res, fmin(res, k * d / t), active);
         res = SEL(res, (real)(0.0f), active & (d < eps));
         active = active & (d >= eps) & (res > 0.002f);

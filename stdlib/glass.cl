@@ -15,7 +15,7 @@ inline mask march_signed(TIME_PARAM vec3 ro, vec3 rd, real side, real t0, real t
     mask hit = active & !active;
     real n = 0.0f;
     for (int i = 0; i < max_steps && M_ANY(active); ++i) {
-        real d = side * scene_dist_inline(TIME_ARG v3_mad(ro, rd, t));
+        real d = side * scene_dist_inline(TIME_ARG v3_mad(ro, rd, t), active);
         mask now_hit = active & (d < hit_eps * pixel_angle * fmax(t, K(1e-4f)));
         hit = hit | now_hit;
         active = active & !now_hit;

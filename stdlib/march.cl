@@ -33,7 +33,7 @@ inline mask march_sphere_trace(TIME_PARAM vec3 ro, vec3 rd, real t0, real t1, ma
     mask hit = active & !active;
     real n = 0.0f;
     for (int i = 0; i < max_steps && M_ANY(active); ++i) {
-        real d = scene_dist_inline(TIME_ARG v3_mad(ro, rd, t));
+        real d = scene_dist_inline(TIME_ARG v3_mad(ro, rd, t), active);
         mask now_hit = active & (d < hit_eps * pixel_angle * fmax(t, K(1e-4f)));
         hit = hit | now_hit;
         active = active & !now_hit;
@@ -134,7 +134,7 @@ inline mask march_sphere_trace_refined(TIME_PARAM vec3 ro, vec3 rd, real t0, rea
     real n = 0.0f;
     real c = (real)(1e30f);
     for (int i = 0; i < max_steps && M_ANY(active); ++i) {
-        real d = scene_dist_inline(TIME_ARG v3_mad(ro, rd, t));
+        real d = scene_dist_inline(TIME_ARG v3_mad(ro, rd, t), active);
         c = SEL(c, fmin(c, d), active);
         mask now_hit = active & (d < hit_eps * pixel_angle * fmax(t, K(1e-4f)));
         d_hit = SEL(d_hit, d, now_hit);

@@ -32,6 +32,9 @@ inline real os_item(vec3 p, __global const float* item, __global const float* pr
 // starts with it as the nearest so far (and returns it where no item is
 // nearer, leaving `mat` 0 there). Nearer children are visited first, and
 // each box is measured once: its distance waits on the stack beside it.
+// Only `live` lanes open boxes: in a marching loop the lanes that have
+// stopped still evaluate, but their values are thrown away, and a stopped
+// lane sits on a surface, where its path down the hierarchy is its own.
 #define OS_STACK 64
 inline real os_box(vec3 p, __global const float* b)
 {
@@ -39,7 +42,8 @@ inline real os_box(vec3 p, __global const float* b)
                 fmax((real)b[2] - p.z, p.z - (real)b[5]));
     return v3_length(v3_max_s(q, K(0.0f))) + fmin(v3_max_comp(q), K(0.0f));
 }
-inline real os_union(vec3 p, __global const float* s, const int n_nodes, const int n_items, const real bound, real* mat)
+inline real os_union(vec3 p, __global const float* s, const int n_nodes, const int n_items, const real bound,
+                     const mask live, real* mat)
 {
     __global const float* items = s + 8 * n_nodes;
     __global const float* prims = items + 4 * n_items;
@@ -51,7 +55,7 @@ inline real os_union(vec3 p, __global const float* s, const int n_nodes, const i
     box[top++] = os_box(p, s);
     while (top > 0) {
         --top;
-        if (!M_ANY(box[top] < best)) continue;
+        if (!M_ANY(live & (box[top] < best))) continue;
         const int node = stack[top];
         __global const float* b = s + 8 * node;
         const int first = (int)b[6], count = (int)b[7];
@@ -64,7 +68,7 @@ inline real os_union(vec3 p, __global const float* s, const int n_nodes, const i
         } else {
             const int left = node + 1;
             const real dl = os_box(p, s + 8 * left), dr = os_box(p, s + 8 * first);
-            const bool left_near = M_ANY(dl < dr);
+            const bool left_near = M_ANY(live & (dl < dr));
             stack[top] = left_near ? first : left;  // the far child waits below the near one
             box[top++] = left_near ? dr : dl;
             stack[top] = left_near ? left : first;

@@ -138,7 +138,7 @@ TEST(Specialisation, OrbitTrapOnlyAtTheHit) {
   std::string k = codegen::emit_opencl(passes::run_pipeline(test::lower_text(
       "materials: {glow: {orbit_trap: {palette: [[0, 0, 1], [1, 0.5, 0]], mix: 0.6}}}\n"
       "scene: {union: [{mandelbox: {}, material: glow}, {sphere: {radius: 1}, translate: [9, 0, 0]}]}\n")), {1, false}).source;
-  size_t dist = k.find("real scene_dist_inline(TIME_PARAM vec3 p)"), dist_end = k.find("\n}\n", dist);
+  size_t dist = k.find("real scene_dist_inline(TIME_PARAM vec3 p, mask live)"), dist_end = k.find("\n}\n", dist);
   ASSERT_NE(dist, std::string::npos);
   EXPECT_EQ(k.substr(dist, dist_end - dist).find("trap"), std::string::npos);
   EXPECT_NE(k.find("real scene_trap(TIME_PARAM vec3 p)"), std::string::npos);
@@ -197,7 +197,7 @@ TEST(Specialisation, MaterialBlendOnlyForSmoothBlendsOfDifferentMaterials) {
        }) {
     std::string k = kernel_for(scene);
     for (const char* c : blend_code) EXPECT_NE(k.find(c), std::string::npos) << c << " missing in the kernel of\n" << scene;
-    size_t dist = k.find("real scene_dist_inline(TIME_PARAM vec3 p)"), dist_end = k.find("\n}\n", dist);
+    size_t dist = k.find("real scene_dist_inline(TIME_PARAM vec3 p, mask live)"), dist_end = k.find("\n}\n", dist);
     ASSERT_NE(dist, std::string::npos);
     EXPECT_EQ(k.substr(dist, dist_end - dist).find("mat_"), std::string::npos) << "blend code in the march";
     EXPECT_EQ(k.find("scene_dist_mat(TIME_ARG pos, &id)"), std::string::npos) << scene;

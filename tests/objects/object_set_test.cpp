@@ -199,5 +199,23 @@ TEST(ObjectSetKernel, SourceSizeDoesNotGrowWithTheCount) {
   EXPECT_GT(big.scene_data.size(), 5000u * ir::object_set::kPrimFloats);
 }
 
+// In the marching loops a stopped lane's value is thrown away, so the walk
+// is given the loop's mask of lanes still marching; every other scene
+// function (normals, materials) needs every lane's value.
+TEST(ObjectSetKernel, OnlyTheMarchingDistanceMasksTheWalk) {
+  const std::string k = codegen::emit_opencl(test::compile_text(scene(100)), {16}).source;
+  auto body = [&](const std::string& signature) {
+    size_t at = k.find(signature);
+    EXPECT_NE(at, std::string::npos) << signature;
+    return at == std::string::npos ? std::string() : k.substr(at, k.find("\n}\n", at) - at);
+  };
+  const std::string marching = body("real scene_dist_inline(TIME_PARAM vec3 p, mask live)");
+  EXPECT_NE(marching.find("os_union("), std::string::npos);
+  EXPECT_NE(marching.find(", live, &"), std::string::npos);
+  const std::string with_material = body("real scene_dist_mat(TIME_PARAM vec3 p, real* mat)");
+  EXPECT_NE(with_material.find(", M_TRUE, &"), std::string::npos);
+  EXPECT_NE(k.find("return scene_dist_inline(TIME_ARG p, M_TRUE);"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace sdfc

@@ -63,6 +63,11 @@ class Walker {
   // set's walk culls by it. Empty: no bound.
   std::string cull_bound;
 
+  // In the marching loops' distance: the mask of the lanes still marching
+  // (the others' values are thrown away, so an object set's walk opens no
+  // box for them). Elsewhere every lane counts: M_TRUE.
+  std::string live_lanes = "M_TRUE";
+
   // Parameter i of n: a literal or its animated expression; param3: a vec3 from i.
   std::string param(const ir::Node& n, size_t i) const { return codegen::detail::param(n, i, lit()); }
   std::string param3(const ir::Node& n, size_t i) const { return codegen::detail::param3(n, i, lit()); }

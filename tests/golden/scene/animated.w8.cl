@@ -1,5 +1,5 @@
 // ---- scene distance: the marching loops inline this at every step ----
-inline __attribute__((always_inline)) real scene_dist_inline(TIME_PARAM vec3 p)
+inline __attribute__((always_inline)) real scene_dist_inline(TIME_PARAM vec3 p, mask live)
 {
     real d0 = sd_plane(p, v3(0.0f, 0.0f, 1.0f), -1.05f);  // plane nx=0 ny=0 nz=1 offset=-1.05  (animated.yaml:18)
     real b1 = sd_box(v3_sub(p, v3(0.0f, 0.0f, 0.0f)), v3(1.9646869f, 1.9646869f, 1.1343125f), 0.0f);  // bounding box  (animated.yaml:22)
@@ -21,11 +21,12 @@ inline __attribute__((always_inline)) real scene_dist_inline(TIME_PARAM vec3 p)
     d11 = fmin(d11, d2);
     d11 = fmin(d11, d6);
     d11 = fmin(d11, d10);
+    (void)live;
     return d11;
 }
 
 // ---- scene distance, called: every use outside the marching loops ----
-__attribute__((noinline)) real scene_dist(TIME_PARAM vec3 p) { return scene_dist_inline(TIME_ARG p); }
+__attribute__((noinline)) real scene_dist(TIME_PARAM vec3 p) { return scene_dist_inline(TIME_ARG p, M_TRUE); }
 
 // ---- scene distance with material: evaluated once per hit ----
 real scene_dist_mat(TIME_PARAM vec3 p, real* mat)

@@ -1,5 +1,5 @@
 // ---- scene distance: the marching loops inline this at every step ----
-inline __attribute__((always_inline)) real scene_dist_inline(TIME_PARAM vec3 p)
+inline __attribute__((always_inline)) real scene_dist_inline(TIME_PARAM vec3 p, mask live)
 {
     vec3 p0 = v3_sub(p, v3(-3.0f, 0.0f, 0.0f));  // translate x=-3 y=0 z=0  (blends.yaml:34)
     real d1 = sd_box(p0, v3(0.4f, 0.4f, 0.4f), 0.05f);  // box hx=0.4 hy=0.4 hz=0.4 radius=0.05  (blends.yaml:32)
@@ -46,11 +46,12 @@ inline __attribute__((always_inline)) real scene_dist_inline(TIME_PARAM vec3 p)
     d32 = fmin(d32, d18);
     d32 = fmin(d32, d25);
     d32 = fmin(d32, d31);
+    (void)live;
     return d32;
 }
 
 // ---- scene distance, called: every use outside the marching loops ----
-__attribute__((noinline)) real scene_dist(TIME_PARAM vec3 p) { return scene_dist_inline(TIME_ARG p); }
+__attribute__((noinline)) real scene_dist(TIME_PARAM vec3 p) { return scene_dist_inline(TIME_ARG p, M_TRUE); }
 
 // ---- scene distance with material: evaluated once per hit ----
 real scene_dist_mat(TIME_PARAM vec3 p, real* mat)

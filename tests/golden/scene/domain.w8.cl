@@ -1,5 +1,5 @@
 // ---- scene distance: the marching loops inline this at every step ----
-inline __attribute__((always_inline)) real scene_dist_inline(TIME_PARAM vec3 p)
+inline __attribute__((always_inline)) real scene_dist_inline(TIME_PARAM vec3 p, mask live)
 {
     real b0 = sd_box(v3_sub(p, v3(0.0f, 1.3f, -0.4305937f)), v3(4.5f, 3.5f, 1.3305937f), 0.0f);  // bounding box  (domain.yaml:20)
     real d1 = b0;
@@ -74,11 +74,12 @@ inline __attribute__((always_inline)) real scene_dist_inline(TIME_PARAM vec3 p)
         d52 = fmin(d52, d39);
         d1 = SEL(d52, b0, b0 > 1.125f);
     }
+    (void)live;
     return d1;
 }
 
 // ---- scene distance, called: every use outside the marching loops ----
-__attribute__((noinline)) real scene_dist(TIME_PARAM vec3 p) { return scene_dist_inline(TIME_ARG p); }
+__attribute__((noinline)) real scene_dist(TIME_PARAM vec3 p) { return scene_dist_inline(TIME_ARG p, M_TRUE); }
 
 // ---- scene distance with material: evaluated once per hit ----
 real scene_dist_mat(TIME_PARAM vec3 p, real* mat)

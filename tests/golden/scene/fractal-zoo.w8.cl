@@ -1,5 +1,5 @@
 // ---- scene distance: the marching loops inline this at every step ----
-inline __attribute__((always_inline)) real scene_dist_inline(TIME_PARAM vec3 p)
+inline __attribute__((always_inline)) real scene_dist_inline(TIME_PARAM vec3 p, mask live)
 {
     real b0 = sd_box(v3_sub(p, v3(0.0f, 0.34625f, 0.12691228f)), v3(4.5f, 3.15375f, 1.3959504f), 0.0f);  // bounding box  (fractal-zoo.yaml:18)
     real d1 = b0;
@@ -58,11 +58,12 @@ inline __attribute__((always_inline)) real scene_dist_inline(TIME_PARAM vec3 p)
         d33 = fmin(d33, d24);
         d1 = SEL(d33, b0, b0 > 1.125f);
     }
+    (void)live;
     return d1;
 }
 
 // ---- scene distance, called: every use outside the marching loops ----
-__attribute__((noinline)) real scene_dist(TIME_PARAM vec3 p) { return scene_dist_inline(TIME_ARG p); }
+__attribute__((noinline)) real scene_dist(TIME_PARAM vec3 p) { return scene_dist_inline(TIME_ARG p, M_TRUE); }
 
 // ---- scene distance with material: evaluated once per hit ----
 real scene_dist_mat(TIME_PARAM vec3 p, real* mat)

@@ -1,5 +1,5 @@
 // ---- scene distance: the marching loops inline this at every step ----
-inline __attribute__((always_inline)) real scene_dist_inline(TIME_PARAM vec3 p)
+inline __attribute__((always_inline)) real scene_dist_inline(TIME_PARAM vec3 p, mask live)
 {
     real b0 = sd_box(v3_sub(p, v3(0.0f, 0.0f, 0.0f)), v3(2.5625f, 2.5625f, 2.3125f), 0.0f);  // bounding box  (hybrid.yaml:25)
     real d1 = b0;
@@ -31,11 +31,12 @@ inline __attribute__((always_inline)) real scene_dist_inline(TIME_PARAM vec3 p)
         real d3 = hyb2;  // hybrid iterations=12 bailout=4 steps=2 k0=0 n0=1 a0=8 b0=0 c0=0 d0=0 k1=1 n1=2 a1=2 b1=0.5 c1=1 d1=1 k2=0 n2=0 a2=0 b2=0 c2=0 d2=0 k3=0 n3=0 a3=0 b3=0 c3=0 d3=0  (hybrid.yaml:18)
         d1 = SEL(d3, b0, b0 > 0.640625f);
     }
+    (void)live;
     return d1;
 }
 
 // ---- scene distance, called: every use outside the marching loops ----
-__attribute__((noinline)) real scene_dist(TIME_PARAM vec3 p) { return scene_dist_inline(TIME_ARG p); }
+__attribute__((noinline)) real scene_dist(TIME_PARAM vec3 p) { return scene_dist_inline(TIME_ARG p, M_TRUE); }
 
 // ---- scene distance with material: evaluated once per hit ----
 real scene_dist_mat(TIME_PARAM vec3 p, real* mat)

@@ -1,5 +1,5 @@
 // ---- scene distance: the marching loops inline this at every step ----
-inline __attribute__((always_inline)) real scene_dist_inline(TIME_PARAM vec3 p)
+inline __attribute__((always_inline)) real scene_dist_inline(TIME_PARAM vec3 p, mask live)
 {
     real b0 = sd_box(v3_sub(p, v3(0.0f, 0.0f, -0.09795524f)), v3(6.0f, 6.0f, 1.2020447f), 0.0f);  // bounding box  (mandelbulb.yaml:12)
     real d1 = b0;
@@ -18,11 +18,12 @@ inline __attribute__((always_inline)) real scene_dist_inline(TIME_PARAM vec3 p)
         d7 = fmin(d7, d5);
         d1 = SEL(d7, b0, b0 > 1.5f);
     }
+    (void)live;
     return d1;
 }
 
 // ---- scene distance, called: every use outside the marching loops ----
-__attribute__((noinline)) real scene_dist(TIME_PARAM vec3 p) { return scene_dist_inline(TIME_ARG p); }
+__attribute__((noinline)) real scene_dist(TIME_PARAM vec3 p) { return scene_dist_inline(TIME_ARG p, M_TRUE); }
 
 // ---- scene distance with material: evaluated once per hit ----
 real scene_dist_mat(TIME_PARAM vec3 p, real* mat)

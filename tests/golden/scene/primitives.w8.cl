@@ -1,5 +1,5 @@
 // ---- scene distance: the marching loops inline this at every step ----
-inline __attribute__((always_inline)) real scene_dist_inline(TIME_PARAM vec3 p)
+inline __attribute__((always_inline)) real scene_dist_inline(TIME_PARAM vec3 p, mask live)
 {
     vec3 p0 = v3_sub(p, v3(0.5f, 2.0f, -0.15f));  // translate x=0.5 y=2 z=-0.15  (primitives.yaml:65)
     real d1 = sd_box(p0, v3(0.6f, 0.6f, 0.6f), 0.0f);  // box hx=0.6 hy=0.6 hz=0.6 radius=0  (primitives.yaml:63)
@@ -58,11 +58,12 @@ inline __attribute__((always_inline)) real scene_dist_inline(TIME_PARAM vec3 p)
     d40 = fmin(d40, d31);
     d40 = fmin(d40, d37);
     d40 = fmin(d40, d39);
+    (void)live;
     return d40;
 }
 
 // ---- scene distance, called: every use outside the marching loops ----
-__attribute__((noinline)) real scene_dist(TIME_PARAM vec3 p) { return scene_dist_inline(TIME_ARG p); }
+__attribute__((noinline)) real scene_dist(TIME_PARAM vec3 p) { return scene_dist_inline(TIME_ARG p, M_TRUE); }
 
 // ---- scene distance with material: evaluated once per hit ----
 real scene_dist_mat(TIME_PARAM vec3 p, real* mat)
