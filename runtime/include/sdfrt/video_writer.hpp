@@ -26,7 +26,7 @@ struct VideoSettings {
 
 class VideoWriter {
  public:
-  // Throws IoError (the file cannot be created) or std::invalid_argument
+  // Throws IoError (the file cannot be created, FFmpeg cannot be loaded) or std::invalid_argument
   // (odd size, CRF out of range, no encoder for the codec).
   VideoWriter(const std::string& path, const VideoSettings& settings);
   ~VideoWriter();

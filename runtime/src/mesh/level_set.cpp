@@ -1,74 +1,46 @@
-// The only file that includes OpenVDB: its headers are heavy to compile.
-// Samples go straight into leaf buffers; a signed flood fill gives the
-// untouched space its inside/outside sign; volumeToMesh makes the polygons.
+// LevelSet as every program sees it: the OpenVDB implementation lives in
+// the module libsdfc_openvdb.so, opened on the first mesh.
 #include <sdfrt/mesh/level_set.hpp>
 
-#include <openvdb/openvdb.h>
-#include <openvdb/tools/SignedFloodFill.h>
-#include <openvdb/tools/VolumeToMesh.h>
+#include <mutex>
 
-#include <algorithm>
-#include <cmath>
-#include <limits>
+#include "loading/dynamic_library.hpp"
+#include "mesh/level_set_backend.hpp"
 
 namespace sdfrt::mesh {
+namespace {
+
+using Entry = decltype(&sdfc_openvdb_level_set);
+
+Entry openvdb_entry() {
+  static Entry entry = nullptr;
+  static std::once_flag once;
+  std::call_once(once, [] {
+    const std::string purpose = "making a mesh";
+    void* lib = open_library(sdfc_module_path(SDFC_OPENVDB_MODULE), purpose);
+    entry = reinterpret_cast<Entry>(library_symbol(lib, SDFC_OPENVDB_ENTRY, purpose));
+  });
+  return entry;
+}
+
+}  // namespace
 
 struct LevelSet::Impl {
-  openvdb::FloatGrid::Ptr grid;
-  float background = 0;
-  float min_value = std::numeric_limits<float>::infinity();
+  std::unique_ptr<LevelSetBackend> backend;
 };
 
-LevelSet::LevelSet(const GridSpec& g) : impl_(std::make_unique<Impl>()) {
-  openvdb::initialize();
-  // Wider than any sampled block's reach (half a block diagonal plus a
-  // voxel), so clamping never changes a value the mesher interpolates.
-  impl_->background = float(2 * kLeafDim * g.voxel);
-  impl_->grid = openvdb::FloatGrid::create(impl_->background);
-  auto xf = openvdb::math::Transform::createLinearTransform(g.voxel);
-  xf->postTranslate(openvdb::Vec3d(g.origin[0], g.origin[1], g.origin[2]));
-  impl_->grid->setTransform(xf);
-  impl_->grid->setGridClass(openvdb::GRID_LEVEL_SET);
+LevelSet::LevelSet(const GridSpec& grid) : impl_(std::make_unique<Impl>()) {
+  impl_->backend.reset(openvdb_entry()(&grid));
 }
 
 LevelSet::~LevelSet() = default;
 
-void LevelSet::add_block(const std::array<int, 3>& b, const float* samples) {
-  auto* leaf = impl_->grid->tree().touchLeaf(openvdb::Coord(b[0] * kLeafDim, b[1] * kLeafDim, b[2] * kLeafDim));
-  float* values = leaf->buffer().data();
-  const float bg = impl_->background;
-  for (int i = 0; i < kLeafVoxels; ++i) {
-    float v = samples[i];
-    if (!std::isnan(v)) impl_->min_value = std::min(impl_->min_value, v);
-    values[i] = std::isnan(v) ? bg : std::clamp(v, -bg, bg);
-  }
-  leaf->setValuesOn();
+void LevelSet::add_block(const std::array<int, 3>& block, const float* samples) {
+  impl_->backend->add_block(block, samples);
 }
-
-std::size_t LevelSet::blocks() const { return impl_->grid->tree().leafCount(); }
-
-std::size_t LevelSet::memory_bytes() const { return impl_->grid->memUsage(); }
-
-float LevelSet::min_value() const { return impl_->min_value; }
-
-Mesh LevelSet::to_mesh(double adaptivity) {
-  openvdb::tools::signedFloodFill(impl_->grid->tree());
-  std::vector<openvdb::Vec3s> points;
-  std::vector<openvdb::Vec3I> triangles;
-  std::vector<openvdb::Vec4I> quads;
-  openvdb::tools::volumeToMesh(*impl_->grid, points, triangles, quads, 0.0, adaptivity, true);
-  Mesh m;
-  m.vertices.resize(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) m.vertices[i] = {points[i].x(), points[i].y(), points[i].z()};
-  points = {};
-  // OpenVDB winds its polygons inwards for a level set: reverse them.
-  m.triangles.reserve(triangles.size() + 2 * quads.size());
-  for (const auto& t : triangles) m.triangles.push_back({t[0], t[2], t[1]});
-  for (const auto& q : quads) {
-    m.triangles.push_back({q[0], q[2], q[1]});
-    m.triangles.push_back({q[0], q[3], q[2]});
-  }
-  return m;
-}
+std::size_t LevelSet::blocks() const { return impl_->backend->blocks(); }
+std::size_t LevelSet::memory_bytes() const { return impl_->backend->memory_bytes(); }
+float LevelSet::min_value() const { return impl_->backend->min_value(); }
+Mesh LevelSet::to_mesh(double adaptivity) { return impl_->backend->to_mesh(adaptivity); }
 
 }  // namespace sdfrt::mesh

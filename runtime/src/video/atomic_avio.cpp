@@ -1,4 +1,5 @@
 #include "video/atomic_avio.hpp"
+#include "video/ffmpeg_api.hpp"
 
 extern "C" {
 #include <libavformat/avio.h>
@@ -15,22 +16,22 @@ constexpr int kBufferSize = 1 << 16;
 }
 
 AtomicAvio::AtomicAvio(AtomicFile& file) : file_(file) {
-  auto* buffer = static_cast<unsigned char*>(av_malloc(kBufferSize));
+  auto* buffer = static_cast<unsigned char*>(ffmpeg().av_malloc(kBufferSize));
   if (!buffer) throw std::bad_alloc();
-  ctx_ = avio_alloc_context(buffer, kBufferSize, 1, this, nullptr, on_write, on_seek);
+  ctx_ = ffmpeg().avio_alloc_context(buffer, kBufferSize, 1, this, nullptr, on_write, on_seek);
   if (!ctx_) {
-    av_free(buffer);
+    ffmpeg().av_free(buffer);
     throw std::bad_alloc();
   }
 }
 
 AtomicAvio::~AtomicAvio() {
-  if (ctx_) av_freep(&ctx_->buffer);
-  avio_context_free(&ctx_);
+  if (ctx_) ffmpeg().av_freep(&ctx_->buffer);
+  ffmpeg().avio_context_free(&ctx_);
 }
 
 void AtomicAvio::flush() {
-  avio_flush(ctx_);
+  ffmpeg().avio_flush(ctx_);
   rethrow_error();
 }
 

@@ -20,13 +20,14 @@ extern "C" {
 #include "image_io/atomic_file.hpp"
 #include "image_io/sample_conversion.hpp"
 #include "video/atomic_avio.hpp"
+#include "video/ffmpeg_api.hpp"
 
 namespace sdfrt {
 namespace {
 
 std::string av_message(int code) {
   char buf[AV_ERROR_MAX_STRING_SIZE] = {};
-  av_strerror(code, buf, sizeof buf);
+  ffmpeg().av_strerror(code, buf, sizeof buf);
   return buf;
 }
 
@@ -54,11 +55,11 @@ struct VideoWriter::Impl {
 
   Impl(const std::string& p, const VideoSettings& s) : path(p), settings(s), file(p) {}
   ~Impl() {
-    sws_freeContext(sws);
-    av_packet_free(&packet);
-    av_frame_free(&frame);
-    avcodec_free_context(&enc);
-    avformat_free_context(mux);  // the AVIOContext is ours (AtomicAvio)
+    ffmpeg().sws_freeContext(sws);
+    ffmpeg().av_packet_free(&packet);
+    ffmpeg().av_frame_free(&frame);
+    ffmpeg().avcodec_free_context(&enc);
+    ffmpeg().avformat_free_context(mux);  // the AVIOContext is ours (AtomicAvio)
   }
 
   [[noreturn]] void fail(const std::string& what, int code) {
@@ -69,19 +70,19 @@ struct VideoWriter::Impl {
   void open() {
     const bool vp9 = settings.container == VideoContainer::WebM;
     const char* encoder = vp9 ? "libvpx-vp9" : "libx264";
-    const AVCodec* codec = avcodec_find_encoder_by_name(encoder);
-    if (!codec) codec = avcodec_find_encoder(vp9 ? AV_CODEC_ID_VP9 : AV_CODEC_ID_H264);
+    const AVCodec* codec = ffmpeg().avcodec_find_encoder_by_name(encoder);
+    if (!codec) codec = ffmpeg().avcodec_find_encoder(vp9 ? AV_CODEC_ID_VP9 : AV_CODEC_ID_H264);
     if (!codec) throw std::invalid_argument(fmt::format("this FFmpeg has no {} encoder", vp9 ? "VP9" : "H.264"));
-    if (avformat_alloc_output_context2(&mux, nullptr, muxer_name(settings.container), path.c_str()) < 0 || !mux)
+    if (ffmpeg().avformat_alloc_output_context2(&mux, nullptr, muxer_name(settings.container), path.c_str()) < 0 || !mux)
       throw std::invalid_argument(fmt::format("this FFmpeg has no {} muxer", muxer_name(settings.container)));
     mux->pb = avio.context();
     mux->flags |= AVFMT_FLAG_CUSTOM_IO;
-    stream = avformat_new_stream(mux, nullptr);
-    enc = avcodec_alloc_context3(codec);
-    frame = av_frame_alloc();
-    packet = av_packet_alloc();
+    stream = ffmpeg().avformat_new_stream(mux, nullptr);
+    enc = ffmpeg().avcodec_alloc_context3(codec);
+    frame = ffmpeg().av_frame_alloc();
+    packet = ffmpeg().av_packet_alloc();
     if (!stream || !enc || !frame || !packet) throw std::bad_alloc();
-    const AVRational rate = av_d2q(settings.fps, 100000);
+    const AVRational rate = ffmpeg().av_d2q(settings.fps, 100000);
     enc->width = settings.width;
     enc->height = settings.height;
     enc->framerate = rate;
@@ -92,51 +93,51 @@ struct VideoWriter::Impl {
     enc->colorspace = AVCOL_SPC_BT709;
     enc->color_range = AVCOL_RANGE_MPEG;
     if (mux->oformat->flags & AVFMT_GLOBALHEADER) enc->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
-    av_opt_set_int(enc->priv_data, "crf", settings.crf, 0);
+    ffmpeg().av_opt_set_int(enc->priv_data, "crf", settings.crf, 0);
     if (vp9) {
       enc->bit_rate = 0;  // constant quality
-      av_opt_set(enc->priv_data, "deadline", "good", 0);
-      av_opt_set_int(enc->priv_data, "cpu-used", 4, 0);
-      av_opt_set_int(enc->priv_data, "row-mt", 1, 0);
+      ffmpeg().av_opt_set(enc->priv_data, "deadline", "good", 0);
+      ffmpeg().av_opt_set_int(enc->priv_data, "cpu-used", 4, 0);
+      ffmpeg().av_opt_set_int(enc->priv_data, "row-mt", 1, 0);
     }
-    if (int e = avcodec_open2(enc, codec, nullptr); e < 0) fail("opening the encoder", e);
-    if (int e = avcodec_parameters_from_context(stream->codecpar, enc); e < 0) fail("the stream parameters", e);
+    if (int e = ffmpeg().avcodec_open2(enc, codec, nullptr); e < 0) fail("opening the encoder", e);
+    if (int e = ffmpeg().avcodec_parameters_from_context(stream->codecpar, enc); e < 0) fail("the stream parameters", e);
     stream->time_base = enc->time_base;
     stream->avg_frame_rate = rate;
-    if (int e = avformat_write_header(mux, nullptr); e < 0) fail("the header", e);
+    if (int e = ffmpeg().avformat_write_header(mux, nullptr); e < 0) fail("the header", e);
     frame->format = AV_PIX_FMT_YUV420P;
     frame->width = settings.width;
     frame->height = settings.height;
-    if (int e = av_frame_get_buffer(frame, 0); e < 0) fail("a frame buffer", e);
-    sws = sws_getContext(settings.width, settings.height, AV_PIX_FMT_RGB24, settings.width, settings.height,
+    if (int e = ffmpeg().av_frame_get_buffer(frame, 0); e < 0) fail("a frame buffer", e);
+    sws = ffmpeg().sws_getContext(settings.width, settings.height, AV_PIX_FMT_RGB24, settings.width, settings.height,
                          AV_PIX_FMT_YUV420P, SWS_BICUBIC | SWS_ACCURATE_RND, nullptr, nullptr,
                          nullptr);
     if (!sws) throw std::bad_alloc();
-    const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
-    sws_setColorspaceDetails(sws, bt709, 1, bt709, 0, 0, 1 << 16, 1 << 16);
+    const int* bt709 = ffmpeg().sws_getCoefficients(SWS_CS_ITU709);
+    ffmpeg().sws_setColorspaceDetails(sws, bt709, 1, bt709, 0, 0, 1 << 16, 1 << 16);
     rgb.resize(std::size_t(settings.width) * std::size_t(settings.height) * 3);
   }
 
   // Sends `f` (nullptr flushes) and writes every packet the encoder returns.
   void encode(AVFrame* f) {
-    if (int e = avcodec_send_frame(enc, f); e < 0) fail("encoding", e);
+    if (int e = ffmpeg().avcodec_send_frame(enc, f); e < 0) fail("encoding", e);
     for (;;) {
-      int e = avcodec_receive_packet(enc, packet);
+      int e = ffmpeg().avcodec_receive_packet(enc, packet);
       if (e == AVERROR(EAGAIN) || e == AVERROR_EOF) return;
       if (e < 0) fail("encoding", e);
-      av_packet_rescale_ts(packet, enc->time_base, stream->time_base);
+      ffmpeg().av_packet_rescale_ts(packet, enc->time_base, stream->time_base);
       packet->stream_index = stream->index;
-      e = av_interleaved_write_frame(mux, packet);
+      e = ffmpeg().av_interleaved_write_frame(mux, packet);
       if (e < 0) fail("writing a frame", e);
     }
   }
 
   void encode_frame() {
     const auto start = std::chrono::steady_clock::now();
-    if (int e = av_frame_make_writable(frame); e < 0) fail("a frame buffer", e);
+    if (int e = ffmpeg().av_frame_make_writable(frame); e < 0) fail("a frame buffer", e);
     const std::uint8_t* src[1] = {rgb.data()};
     const int stride[1] = {settings.width * 3};
-    sws_scale(sws, src, stride, 0, settings.height, frame->data, frame->linesize);
+    ffmpeg().sws_scale(sws, src, stride, 0, settings.height, frame->data, frame->linesize);
     frame->pts = frames;
     encode(frame);
     ++frames;
@@ -148,7 +149,7 @@ struct VideoWriter::Impl {
     const auto start = std::chrono::steady_clock::now();
     if (rows != 0) throw IoError(fmt::format("cannot write '{}': the last frame is incomplete", path), path, 0);
     encode(nullptr);
-    if (int e = av_write_trailer(mux); e < 0) fail("the trailer", e);
+    if (int e = ffmpeg().av_write_trailer(mux); e < 0) fail("the trailer", e);
     avio.flush();
     if (other) {
       file.commit_as(*other);
@@ -171,7 +172,7 @@ VideoWriter::VideoWriter(const std::string& path, const VideoSettings& s) {
   const int max_crf = s.container == VideoContainer::WebM ? 63 : 51;
   if (s.crf < 0 || s.crf > max_crf)
     throw std::invalid_argument(fmt::format("--quality for this video is a CRF from 0 (best) to {}, not {}", max_crf, s.crf));
-  av_log_set_level(AV_LOG_ERROR);  // the encoders' statistics are not for users
+  ffmpeg().av_log_set_level(AV_LOG_ERROR);  // the encoders' statistics are not for users
   impl_ = std::make_unique<Impl>(path, s);
   impl_->open();
 }
