@@ -1,6 +1,6 @@
 #pragma once
 // Libraries opened the first time a command needs them, not at start-up.
-// FFmpeg (video files) and OpenVDB (meshes) pull in about 150 shared
+// FFmpeg (video files) and OpenVDB (meshes) pull in over a hundred shared
 // libraries whose loading cost every sdfc process ~130 ms, though most
 // commands never write a video or a mesh.
 #include <string>

@@ -2,7 +2,7 @@
 // the module libsdfc_openvdb.so, opened on the first mesh.
 #include <sdfrt/mesh/level_set.hpp>
 
-#include <mutex>
+#include <string>
 
 #include "loading/dynamic_library.hpp"
 #include "mesh/level_set_backend.hpp"
@@ -12,14 +12,15 @@ namespace {
 
 using Entry = decltype(&sdfc_openvdb_level_set);
 
+Entry load_entry() {
+  const std::string purpose = "making a mesh";
+  void* lib = open_library(sdfc_module_path(SDFC_OPENVDB_MODULE), purpose);
+  return reinterpret_cast<Entry>(library_symbol(lib, SDFC_OPENVDB_ENTRY, purpose));
+}
+
+// Opened once (a failed open is tried again by the next mesh).
 Entry openvdb_entry() {
-  static Entry entry = nullptr;
-  static std::once_flag once;
-  std::call_once(once, [] {
-    const std::string purpose = "making a mesh";
-    void* lib = open_library(sdfc_module_path(SDFC_OPENVDB_MODULE), purpose);
-    entry = reinterpret_cast<Entry>(library_symbol(lib, SDFC_OPENVDB_ENTRY, purpose));
-  });
+  static const Entry entry = load_entry();
   return entry;
 }
 

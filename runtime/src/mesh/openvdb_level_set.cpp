@@ -16,12 +16,6 @@
 namespace sdfrt::mesh {
 namespace {
 
-struct Impl {
-  openvdb::FloatGrid::Ptr grid;
-  float background = 0;
-  float min_value = std::numeric_limits<float>::infinity();
-};
-
 class OpenVdbLevelSet final : public LevelSetBackend {
  public:
   explicit OpenVdbLevelSet(const GridSpec& g);
@@ -32,45 +26,47 @@ class OpenVdbLevelSet final : public LevelSetBackend {
   Mesh to_mesh(double adaptivity) override;
 
  private:
-  std::unique_ptr<Impl> impl_ = std::make_unique<Impl>();
+  openvdb::FloatGrid::Ptr grid_;
+  float background_ = 0;
+  float min_value_ = std::numeric_limits<float>::infinity();
 };
 
 OpenVdbLevelSet::OpenVdbLevelSet(const GridSpec& g) {
   openvdb::initialize();
   // Wider than any sampled block's reach (half a block diagonal plus a
   // voxel), so clamping never changes a value the mesher interpolates.
-  impl_->background = float(2 * kLeafDim * g.voxel);
-  impl_->grid = openvdb::FloatGrid::create(impl_->background);
+  background_ = float(2 * kLeafDim * g.voxel);
+  grid_ = openvdb::FloatGrid::create(background_);
   auto xf = openvdb::math::Transform::createLinearTransform(g.voxel);
   xf->postTranslate(openvdb::Vec3d(g.origin[0], g.origin[1], g.origin[2]));
-  impl_->grid->setTransform(xf);
-  impl_->grid->setGridClass(openvdb::GRID_LEVEL_SET);
+  grid_->setTransform(xf);
+  grid_->setGridClass(openvdb::GRID_LEVEL_SET);
 }
 
 void OpenVdbLevelSet::add_block(const std::array<int, 3>& b, const float* samples) {
-  auto* leaf = impl_->grid->tree().touchLeaf(openvdb::Coord(b[0] * kLeafDim, b[1] * kLeafDim, b[2] * kLeafDim));
+  auto* leaf = grid_->tree().touchLeaf(openvdb::Coord(b[0] * kLeafDim, b[1] * kLeafDim, b[2] * kLeafDim));
   float* values = leaf->buffer().data();
-  const float bg = impl_->background;
+  const float bg = background_;
   for (int i = 0; i < kLeafVoxels; ++i) {
     float v = samples[i];
-    if (!std::isnan(v)) impl_->min_value = std::min(impl_->min_value, v);
+    if (!std::isnan(v)) min_value_ = std::min(min_value_, v);
     values[i] = std::isnan(v) ? bg : std::clamp(v, -bg, bg);
   }
   leaf->setValuesOn();
 }
 
-std::size_t OpenVdbLevelSet::blocks() const { return impl_->grid->tree().leafCount(); }
+std::size_t OpenVdbLevelSet::blocks() const { return grid_->tree().leafCount(); }
 
-std::size_t OpenVdbLevelSet::memory_bytes() const { return impl_->grid->memUsage(); }
+std::size_t OpenVdbLevelSet::memory_bytes() const { return grid_->memUsage(); }
 
-float OpenVdbLevelSet::min_value() const { return impl_->min_value; }
+float OpenVdbLevelSet::min_value() const { return min_value_; }
 
 Mesh OpenVdbLevelSet::to_mesh(double adaptivity) {
-  openvdb::tools::signedFloodFill(impl_->grid->tree());
+  openvdb::tools::signedFloodFill(grid_->tree());
   std::vector<openvdb::Vec3s> points;
   std::vector<openvdb::Vec3I> triangles;
   std::vector<openvdb::Vec4I> quads;
-  openvdb::tools::volumeToMesh(*impl_->grid, points, triangles, quads, 0.0, adaptivity, true);
+  openvdb::tools::volumeToMesh(*grid_, points, triangles, quads, 0.0, adaptivity, true);
   Mesh m;
   m.vertices.resize(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) m.vertices[i] = {points[i].x(), points[i].y(), points[i].z()};
