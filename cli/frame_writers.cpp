@@ -75,7 +75,10 @@ class ImageSink final : public FrameSink {
     }
   }
   void write_band(const sdfrt::FloatImage& band) override {
-    beauty_->write_band(hit_ >= 0 ? straight_rgba(band, hit_, gamma_) : band);
+    // Not `hit_ >= 0 ? straight_rgba(...) : band`: that conditional is a
+    // prvalue, so it would copy the whole band when there is no alpha.
+    if (hit_ >= 0) beauty_->write_band(straight_rgba(band, hit_, gamma_));
+    else beauty_->write_band(band);
     aovs_.write(band);
   }
   std::vector<std::string> finish() override {

@@ -97,6 +97,9 @@ class Renderer {
   std::optional<Kernel> kernel_;
   BufferHandle out_buffer_;
   std::size_t out_buffer_floats_ = 0;
+  // The output tile as read back; kept between calls (a render is many
+  // bands and tiles), so its pages are touched once, not once per band.
+  std::vector<float> host_tile_;
   BufferHandle env_buffer_;  // KernelSpec::environment, on the device
   BufferHandle frame_buffer_;
   std::size_t frame_buffer_floats_ = 0;

@@ -153,7 +153,8 @@ FloatImage Renderer::render(const std::vector<float>& frame, int width, int heig
   RenderStats stats;
   const int total = static_cast<int>(plan.tiles.size());
   if (options.progress) options.progress(0, total);
-  std::vector<float> host(max_floats);
+  if (host_tile_.size() < max_floats) host_tile_.resize(max_floats);
+  std::vector<float>& host = host_tile_;
 
   // Renders the w x h pixels at (x0, y0) of the band in one launch into the image.
   auto launch_slice = [&](int x0, int y0, int w, int h) {
