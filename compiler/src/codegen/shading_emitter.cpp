@@ -28,9 +28,40 @@ std::string light_position(const ir::Light& l, const Literals& lit) {
                      animated(l.position_anim[1], l.position[1], lit), animated(l.position_anim[2], l.position[2], lit));
 }
 
+// The lanes whose shadow ray rises from every plane of `open` steeply enough
+// that no plane can block it (hard shadows: at all) or lower its penumbra
+// k d / t below 1 (soft: a slope of at least 1/k): "M_TRUE" when the build
+// knows the direction (`fixed`, a directional light) and it does, "" when it
+// does not, else a per-lane test.
+std::string rising_lanes(const ir::Light& l, const std::string& to_light, const ir::Vec3d* fixed,
+                         const ir::ShadowBounds& open, const Literals& lit) {
+  const double k = l.shadows == ir::Light::Shadows::Soft ? l.softness : 0.0;
+  std::string tests;
+  for (const ir::Vec3d& n : open.plane_normals) {
+    if (fixed) {
+      const double slope = (*fixed)[0] * n[0] + (*fixed)[1] * n[1] + (*fixed)[2] * n[2];
+      if (k > 0 ? k * slope < 1.0 : slope <= 0.0) return "";
+      continue;
+    }
+    tests += tests.empty() ? "" : " & ";
+    tests += k > 0 ? fmt::format("({} * v3_dot({}, {}) >= 1.0f)", lit.real(k), to_light, lit.vec3(n))
+                   : fmt::format("(v3_dot({}, {}) > 0.0f)", to_light, lit.vec3(n));
+  }
+  return tests.empty() ? "M_TRUE" : tests;
+}
+
 std::string shadow_call(const ir::Light& l, const std::string& to_light, std::string tmax, const Literals& lit,
-                        const ir::RayBounds* bounds, std::set<std::string>& used) {
+                        const ir::RayBounds* bounds, std::set<std::string>& used, const ir::ShadowBounds* open,
+                        const ir::Vec3d* fixed) {
   if (l.shadows == ir::Light::Shadows::None) return "";
+  const std::string rising = open ? rising_lanes(l, to_light, fixed, *open, lit) : "";
+  if (!rising.empty() && l.shadows == ir::Light::Shadows::Hard) {
+    // A rising hard shadow ray is blocked by nothing past the parts' box.
+    used.insert("ray_box_exit");
+    std::string exit = fmt::format("ray_box_exit(shadow_origin, {}, {}, {}, {})", to_light, lit.vec3(open->box.lo),
+                                   lit.vec3(open->box.hi), tmax);
+    tmax = rising == "M_TRUE" ? exit : fmt::format("SEL({}, {}, {})", tmax, exit, rising);
+  }
   if (bounds) {
     used.insert("ray_box_exit");
     tmax = fmt::format("ray_box_exit(shadow_origin, {}, {}, {}, {})", to_light, lit.vec3(bounds->box.lo),
@@ -47,6 +78,11 @@ std::string shadow_call(const ir::Light& l, const std::string& to_light, std::st
   if (l.shadows == ir::Light::Shadows::Hard) {
     used.insert("shadow_hard");
     return fmt::format("shadow_hard(TIME_ARG {}, {})", common, tail);
+  }
+  if (!rising.empty()) {
+    used.insert("shadow_soft_open");
+    return fmt::format("shadow_soft_open(TIME_ARG {}, {}, {}, {}, {}, {})", common, lit.real(l.softness), tail,
+                       lit.vec3(open->box.lo), lit.vec3(open->box.hi), rising);
   }
   used.insert("shadow_soft");
   return fmt::format("shadow_soft(TIME_ARG {}, {}, {})", common, lit.real(l.softness), tail);
@@ -100,6 +136,7 @@ std::string emit_shading(const ir::RenderPlan& plan, const ir::Analyses& facts, 
                          std::set<std::string>& used) {
   const bool blended = facts.material_blend;
   const ir::RayBounds* bounds = facts.ray_bounds ? &*facts.ray_bounds : nullptr;
+  const ir::ShadowBounds* open = facts.shadow_bounds ? &*facts.shadow_bounds : nullptr;
   const bool traps = facts.orbit_traps;  // any orbit-trap material: the trap value comes along
   std::string trap_param = traps ? ", real trap" : "";
   CodeWriter w;
@@ -138,9 +175,10 @@ std::string emit_shading(const ir::RenderPlan& plan, const ir::Analyses& facts, 
     if (l.kind == ir::LightKind::Directional) {
       any_direct = true;
       w.line(fmt::format("// light {}: directional ({})", i, where(l.loc)));
-      std::string to_light = lit.vec3({-l.direction[0], -l.direction[1], -l.direction[2]});
+      const ir::Vec3d dir{-l.direction[0], -l.direction[1], -l.direction[2]};
+      std::string to_light = lit.vec3(dir);
       std::string term = fmt::format("shade_blinn_phong(n, {}, v, albedo, specular, shininess, {})", to_light, rad);
-      std::string sh = shadow_call(l, to_light, lit.real(plan.march.max_distance), lit, bounds, used);
+      std::string sh = shadow_call(l, to_light, lit.real(plan.march.max_distance), lit, bounds, used, open, &dir);
       if (!sh.empty()) term = fmt::format("v3_scale({}, {})", term, sh);
       w.line(fmt::format("c = v3_add(c, {});", term));
     } else if (l.kind == ir::LightKind::Point) {
@@ -150,7 +188,7 @@ std::string emit_shading(const ir::RenderPlan& plan, const ir::Analyses& facts, 
       w.line(fmt::format("vec3 l = v3_sub({}, p);", light_position(l, lit)));
       w.line("real dist2 = fmax(v3_dot(l, l), K(1e-8f));");
       w.line("l = v3_scale(l, rsqrt(dist2));");
-      std::string sh = shadow_call(l, "l", "sqrt(dist2)", lit, bounds, used);
+      std::string sh = shadow_call(l, "l", "sqrt(dist2)", lit, bounds, used, open, nullptr);
       w.line(fmt::format("c = v3_add(c, v3_scale(shade_blinn_phong(n, l, v, albedo, specular, shininess, {}), {}1.0f / dist2));",
                          rad, sh.empty() ? "" : sh + " * "));
       w.close("}");

@@ -21,8 +21,12 @@ std::string emit_material_table(const ir::RenderPlan& plan, const ir::Analyses& 
 // the caller's scope holds shadow_origin, footprint, hit and n.
 // A point light's position, as literals or, where animated, expressions of time.
 std::string light_position(const ir::Light& l, const Literals& lit);
+// `open` (facts.shadow_bounds, or null) lets rays that rise from the scene's
+// planes stop early (shadow_soft_open); `fixed` is the direction to the light
+// when the build knows it.
 std::string shadow_call(const ir::Light& l, const std::string& to_light, std::string tmax, const Literals& lit,
-                        const ir::RayBounds* bounds, std::set<std::string>& used);
+                        const ir::RayBounds* bounds, std::set<std::string>& used,
+                        const ir::ShadowBounds* open = nullptr, const ir::Vec3d* fixed = nullptr);
 std::string emit_shading(const ir::RenderPlan& plan, const ir::Analyses& facts, const Literals& lit,
                          std::set<std::string>& used);
 }  // namespace sdfc::codegen::detail

@@ -119,6 +119,37 @@ std::optional<ir::RayBounds> ray_bounds(const ir::Module& m) {
   return b;
 }
 
+// For an unbounded scene: a plain union (through bounding boxes and
+// materials) whose children are planes or have finite bounds, at least one
+// of each. The box is padded as ray_bounds pads the scene's.
+std::optional<ir::ShadowBounds> shadow_bounds(const ir::Module& m) {
+  const ir::Graph& g = *m.graph;
+  auto unwrap = [&](NodeId id) {
+    while (g.node(id).kind == Kind::Bounded || g.node(id).kind == Kind::Material) id = g.node(id).children[0];
+    return id;
+  };
+  const ir::Node& u = g.node(unwrap(m.root));
+  if (u.kind != Kind::Union) return std::nullopt;
+  ir::ShadowBounds s;
+  bool any_box = false;
+  for (NodeId c : u.children) {
+    const ir::Node& n = g.node(unwrap(c));
+    if (n.kind == Kind::Plane) {
+      s.plane_normals.push_back({n.params[0], n.params[1], n.params[2]});  // fixed and unit (the plane kind's reader)
+      continue;
+    }
+    const ir::Box3& b = g.node(c).props.bounds;
+    if (!b.finite()) return std::nullopt;
+    s.box = any_box ? s.box.united(b) : b;
+    any_box = true;
+  }
+  if (!any_box || s.plane_normals.empty()) return std::nullopt;
+  double ext = 0;
+  for (int i = 0; i < 3; ++i) ext = std::max(ext, s.box.hi[i] - s.box.lo[i]);
+  s.box = s.box.padded(0.01 * ext + 1e-3);
+  return s;
+}
+
 }  // namespace
 
 ir::Module analyse(ir::Module m) {
@@ -131,6 +162,7 @@ ir::Module analyse(ir::Module m) {
                                     [](const auto& md) { return md.geometry_coloured(); });
   a.uniform_material = uniform_material(m);
   a.ray_bounds = ray_bounds(m);
+  if (!a.ray_bounds) a.shadow_bounds = shadow_bounds(m);
   m.analyses = std::move(a);
   detail::record_fit_box(m);  // what camera.fit frames
   return m;

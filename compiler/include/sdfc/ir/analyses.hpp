@@ -2,6 +2,7 @@
 // Facts about a whole module that the emitters need, recorded once by the
 // `analyse` pass (passes/analyse.cpp) so no emitter derives them again.
 #include <optional>
+#include <vector>
 
 #include "sdfc/ir/graph.hpp"
 #include "sdfc/ir/render_plan.hpp"
@@ -17,6 +18,17 @@ struct RayBounds {
   double radius = 0;
 };
 
+// An unbounded scene that is a plain union of bounded parts and planes (a
+// fractal on a floor): the parts' padded box and the planes' outward normals.
+// Outside the box the distance to the parts is at least the distance to the
+// box, and a ray rising from a plane only moves away from it, so shadow rays
+// need not march on to the light once both say nothing can block them or
+// darken their penumbra any more (shadow_soft_open, shading_emitter.cpp).
+struct ShadowBounds {
+  Box3 box;
+  std::vector<Vec3d> plane_normals;
+};
+
 struct Analyses {
   bool known = false;           // the analyse pass has run
   bool uses_time = false;       // animated geometry, lights or fog: the kernel reads the frame time
@@ -27,6 +39,8 @@ struct Analyses {
   std::optional<double> uniform_material;
   // Where primary and shadow rays march; none for an unbounded scene.
   std::optional<RayBounds> ray_bounds;
+  // For an unbounded scene of bounded parts and planes; see ShadowBounds.
+  std::optional<ShadowBounds> shadow_bounds;
 };
 
 }  // namespace sdfc::ir
