@@ -48,9 +48,11 @@ void write_text_output(const std::string& path, const std::string& text) {
   sdfrt::write_output_file(path, text);
 }
 
-// 16 lanes fill AVX-512 and measured fastest on PoCL here (802 ms vs 1031 ms at 8
-// and 6341 ms per pixel for the 1280x720 Mandelbulb); GPUs want one pixel per work-item.
-int default_simd_width(bool device_is_cpu) { return device_is_cpu ? 16 : 1; }
+// 64 lanes are four AVX-512 registers per value: a march step waits on its
+// square roots and divisions, and four independent registers give the core
+// other work meanwhile (the 1280x720 bench Mandelbulb: 65 ms against 105 ms
+// at 16 lanes, same pixels; docs/performance.md). GPUs want one pixel per work-item.
+int default_simd_width(bool device_is_cpu) { return device_is_cpu ? 64 : 1; }
 
 void warn_if_camera_inside(const ir::Module& m, const std::string& scene_path) {
   const ir::Camera& cam = m.plan.camera;

@@ -115,11 +115,11 @@ Action add_compile(CLI::App& app) {
                   "Read this value from the frame block instead of baking it (as the viewer's panel does); "
                   "PATH walks keys and list indices (lights[0].intensity), =LO:HI the range it may take (repeatable)");
   cmd->add_option("-o,--output", a->output, "Write to FILE instead of stdout");
-  cmd->add_option("--simd-width", a->simd_width, "Pixels per work-item: 1 (GPU form) or 2/4/8/16 (CPU packets); "
+  cmd->add_option("--simd-width", a->simd_width, "Pixels per work-item: 1 (GPU form) or 2/4/8/16/32/64 (CPU packets); "
                                                  "default: the width render picks for a CPU device")
-      ->check(CLI::IsMember({1, 2, 4, 8, 16}));
-  cmd->add_option("--packet-rows", a->packet_rows, "Pixel rows per packet, dividing --simd-width (default: 4 at width 16)")
-      ->check(CLI::IsMember({1, 2, 4, 8, 16}));
+      ->check(CLI::IsMember({1, 2, 4, 8, 16, 32, 64}));
+  cmd->add_option("--packet-rows", a->packet_rows, "Pixel rows per packet, dividing --simd-width (default: 4 at widths 16 and 32, 8 at 64)")
+      ->check(CLI::IsMember({1, 2, 4, 8, 16, 32, 64}));
   cmd->add_flag("--stats", a->stats, "Print the time of each stage and the kernel's size on stderr");
   cmd->add_flag("--build", a->build, "With --stats: also build the kernel on the device and time it "
                                      "(SDFC_KERNEL_CACHE=0 for a cold build)");

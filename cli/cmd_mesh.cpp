@@ -209,8 +209,8 @@ Action add_mesh(CLI::App& app) {
   cmd->add_flag("--dense", a->dense, "Sample every voxel instead of the narrow band (slow; for comparison)");
   cmd->add_flag("--check", a->check, "Check the mesh: watertight, consistently oriented, parts, Euler characteristic");
   cmd->add_option("--device", a->device, "Device id from 'sdfc devices'; default: $SDFC_DEVICE, else the first CPU device");
-  cmd->add_option("--simd-width", a->simd_width, "Samples per work-item: 1 or 2/4/8/16 (default: 16 on CPUs, 1 on GPUs)")
-      ->check(CLI::IsMember({1, 2, 4, 8, 16}));
+  cmd->add_option("--simd-width", a->simd_width, "Samples per work-item: 1 or 2/4/8/16/32/64 (default: 64 on CPUs, 1 on GPUs)")
+      ->check(CLI::IsMember({1, 2, 4, 8, 16, 32, 64}));
   cmd->add_flag("-q,--quiet", a->quiet, "No progress or summary on stderr");
   return [a] { return run_mesh(*a); };
 }

@@ -252,11 +252,11 @@ Action add_render(CLI::App& app) {
   cmd->add_flag("--verbose", a->verbose, "Also print the kernel's build time and its packet shape (pixels per work-item)");
   cmd->add_option("--device", a->device, "Device id from 'sdfc devices' (P:D, an index or part of the name); "
                                          "default: $SDFC_DEVICE, else the first CPU device");
-  cmd->add_option("--simd-width", a->simd_width, "Pixels per work-item: 1 or 2/4/8/16 (default: 16 on CPUs, 1 on GPUs)")
-      ->check(CLI::IsMember({1, 2, 4, 8, 16}));
+  cmd->add_option("--simd-width", a->simd_width, "Pixels per work-item: 1 or 2/4/8/16/32/64 (default: 64 on CPUs, 1 on GPUs)")
+      ->check(CLI::IsMember({1, 2, 4, 8, 16, 32, 64}));
   cmd->add_option("--packet-rows", a->packet_rows,
-                  "Pixel rows per packet, dividing --simd-width (default: 4 at width 16, i.e. 4x4 pixels; else 1)")
-      ->check(CLI::IsMember({1, 2, 4, 8, 16}));
+                  "Pixel rows per packet, dividing --simd-width (default: 4 at widths 16 and 32, 8 at 64, i.e. 4x4, 8x4 and 8x8 pixels; else 1)")
+      ->check(CLI::IsMember({1, 2, 4, 8, 16, 32, 64}));
   cmd->add_option("--tile", a->tile, "Tile size in pixels (default 256)")->check(CLI::Range(16, 16384));
   cmd->add_option("--repeat", a->repeat, "Render one warm-up and N timed frames; print each time and the median")
       ->check(CLI::Range(1, 1000));

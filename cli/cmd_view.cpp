@@ -85,8 +85,8 @@ Action add_view(CLI::App& app) {
   cmd->add_option("--height", a->height, "Window height (default: render.height)")->check(CLI::Range(16, 16384));
   cmd->add_option("--device", a->device, "Device id from 'sdfc devices' (P:D, an index or part of the name); "
                                          "default: $SDFC_DEVICE, else the first CPU device");
-  cmd->add_option("--simd-width", a->simd_width, "Pixels per work-item: 1 or 2/4/8/16 (default: 16 on CPUs, 1 on GPUs)")
-      ->check(CLI::IsMember({1, 2, 4, 8, 16}));
+  cmd->add_option("--simd-width", a->simd_width, "Pixels per work-item: 1 or 2/4/8/16/32/64 (default: 64 on CPUs, 1 on GPUs)")
+      ->check(CLI::IsMember({1, 2, 4, 8, 16, 32, 64}));
   cmd->add_option("--samples", a->samples, "Samples per pixel to accumulate while the camera is still (default 16)")
       ->check(CLI::Range(1, 1024));
   cmd->add_option("--screenshot-dir", a->screenshot_dir, "Where P saves screenshots (default: the current directory)");

@@ -76,6 +76,29 @@ TEST(Specialisation, WidthSelectsThePacketTypes) {
   EXPECT_TRUE(has(kernel_of(s, 16), "typedef float16 real;"));
   EXPECT_TRUE(has(kernel_of(s, 16), "typedef int16 mask;"));
   EXPECT_THROW(kernel_of(s, 3), std::invalid_argument);
+  EXPECT_THROW(kernel_of(s, 128), std::invalid_argument);
+}
+
+TEST(Specialisation, WidePacketsOverloadOnlyTheBuiltinsTheKernelCalls) {
+  // 64 lanes: Clang vectors of 64, whose halves are vectors of 32, whose halves are OpenCL's float16
+  std::string sphere = kernel_of("scene: {sphere: {radius: 1}}\n", 64);
+  EXPECT_TRUE(has(sphere, "typedef float real64 __attribute__((ext_vector_type(64)));")) << sphere;
+  EXPECT_TRUE(has(sphere, "typedef float real32 __attribute__((ext_vector_type(32)));"));
+  EXPECT_TRUE(has(sphere, "typedef real64 real;"));
+  EXPECT_TRUE(has(sphere, "typedef mask64 mask;"));
+  EXPECT_TRUE(has(sphere, "#define SDFC_PACKET_W 8"));  // 8x8 pixels
+  EXPECT_TRUE(has(sphere, "OVERLOADED real64 sqrt(real64 a)"));
+  EXPECT_TRUE(has(sphere, "OVERLOADED real64 select(real64 a, real64 b, mask64 c) { return c ? b : a; }"));
+  EXPECT_TRUE(has(sphere, "OVERLOADED int any(mask64 a)"));
+  for (const char* absent : {"atan2(", "fmod(", "acos(", "sinh("}) EXPECT_FALSE(has(sphere, absent)) << absent;
+  // a scene that calls more builtins gets their overloads too
+  std::string twist = kernel_of("scene:\n  box: {size: [1, 1, 1]}\n  twist: {axis: z, rate: 1.5}\n", 64);
+  EXPECT_TRUE(has(twist, "OVERLOADED real64 cos(real64 a)")) << twist;
+  // double precision: the masks are as wide as the lanes
+  std::string dbl = kernel_of("render: {precision: double}\nscene: {sphere: {radius: 1}}\n", 32);
+  EXPECT_TRUE(has(dbl, "typedef double real32 __attribute__((ext_vector_type(32)));")) << dbl;
+  EXPECT_TRUE(has(dbl, "typedef long mask32 __attribute__((ext_vector_type(32)));"));
+  EXPECT_TRUE(has(dbl, "#define SDFC_PACKET_H 4"));  // 8x4 pixels
 }
 
 }  // namespace

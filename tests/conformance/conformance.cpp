@@ -9,7 +9,8 @@
 namespace sdfc::conformance {
 
 const std::vector<EvalConfig>& eval_configs() {
-  static const std::vector<EvalConfig> c = {{1, false}, {8, false}, {16, false}, {1, true}, {8, true}, {16, true}};
+  static const std::vector<EvalConfig> c = {{1, false}, {8, false},  {16, false}, {64, false},
+                                            {1, true},  {8, true},   {16, true},  {64, true}};
   return c;
 }
 

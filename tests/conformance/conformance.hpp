@@ -26,7 +26,7 @@ struct EvalConfig {
   }
 };
 inline void PrintTo(const EvalConfig& c, std::ostream* os) { *os << c.name(); }
-const std::vector<EvalConfig>& eval_configs();  // {1, 8, 16} x {float, double}
+const std::vector<EvalConfig>& eval_configs();  // {1, 8, 16, 64} x {float, double}
 
 // How close an OpenCL distance must be to the double reference.
 //

@@ -59,11 +59,11 @@ TEST(CliRender, WritesThePngAndPrintsItsPath) {
   for (const auto& name : out_dir.file_names()) EXPECT_EQ(name.find(".tmp-"), std::string::npos) << name;
 
   // The pixels are the scene's: the same render done in-process (SIMD
-  // width 8, the CLI's CPU default; widths agree anyway, see examples_test)
+  // width 64, the CLI's CPU default; widths agree anyway, see examples_test)
   // quantised to 8 bits matches to one level on >= 99.5% of samples.
   SourceValue doc = load_scene_source(scene.string(), {"render.width=96", "render.height=54"});
   ir::Module m = build_module(doc, scene.string());
-  sdfrt::FloatImage img = render(m, 8);
+  sdfrt::FloatImage img = render(m, 64);
   size_t off = 0, n = size_t(w) * h * 3;
   int distinct[256] = {};
   for (int y = 0; y < h; ++y)

@@ -1,10 +1,10 @@
 // Every scene in examples/ (globbed when the test binary runs), compiled and
-// rendered small on the real device at SIMD width 1 and 8:
+// rendered small on the real device at SIMD width 1 and 64 (the CPU default):
 //  - every plane finite, colours in [0, 1], depth -1 or a positive t;
 //  - a real image: spread of colours, some hits, and misses wherever a CPU
 //    sphere tracer over the reference evaluator sees background;
 //  - the hit mask and depth agree with that CPU tracer;
-//  - width 1 and width 8 give the same image (<= 1/255 on >= 99.5% of pixels).
+//  - width 1 and width 64 give the same image (<= 1/255 on >= 99.5% of pixels).
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>
@@ -34,7 +34,7 @@ std::vector<std::string> example_paths() {
 
 struct Rendered {
   ir::Module module;
-  sdfrt::FloatImage w1, w8;
+  sdfrt::FloatImage w1, w64;
 };
 
 class ExampleScene : public ::testing::TestWithParam<std::string> {
@@ -52,7 +52,7 @@ class ExampleScene : public ::testing::TestWithParam<std::string> {
                           "render.dither=false", "camera.aperture=0"});
     Rendered r{build_module(doc, path.string()), {}, {}};
     r.w1 = render(r.module, 1);
-    r.w8 = render(r.module, 8);
+    r.w64 = render(r.module, 64);
     return cache.emplace(path.string(), std::move(r)).first->second;
   }
 };
@@ -105,17 +105,17 @@ void check_image(const sdfrt::FloatImage& img, const ir::Module& m, const std::s
 TEST_P(ExampleScene, RendersFiniteNonBlankImages) {
   Rendered& r = get(GetParam());
   check_image(r.w1, r.module, "SIMD width 1");
-  check_image(r.w8, r.module, "SIMD width 8");
+  check_image(r.w64, r.module, "SIMD width 64");
 }
 
-TEST_P(ExampleScene, Width1AndWidth8Agree) {
+TEST_P(ExampleScene, Width1AndWidth64Agree) {
   Rendered& r = get(GetParam());
   const size_t n = r.w1.plane_size();
   size_t differ = 0;
   float worst = 0;
   for (size_t i = 0; i < n; ++i) {
     float d = 0;
-    for (int k = 0; k < 3; ++k) d = std::max(d, std::fabs(r.w1.plane(k)[i] - r.w8.plane(k)[i]));
+    for (int k = 0; k < 3; ++k) d = std::max(d, std::fabs(r.w1.plane(k)[i] - r.w64.plane(k)[i]));
     worst = std::max(worst, d);
     differ += d > 1.0f / 255.0f;
   }
@@ -123,7 +123,7 @@ TEST_P(ExampleScene, Width1AndWidth8Agree) {
                                        << ")";
   // Hit masks too: a pixel hit at one width and missed at the other is a lane bug.
   size_t mask_differ = 0;
-  for (size_t i = 0; i < n; ++i) mask_differ += (r.w1.plane(3)[i] >= 0) != (r.w8.plane(3)[i] >= 0);
+  for (size_t i = 0; i < n; ++i) mask_differ += (r.w1.plane(3)[i] >= 0) != (r.w64.plane(3)[i] >= 0);
   EXPECT_LE(double(mask_differ), 0.005 * n);
 }
 
@@ -149,7 +149,7 @@ TEST_P(ExampleScene, MatchesCpuReferenceTracer) {
       ++compared;
       cpu_misses += clear_miss;
       cpu_hits += clear_hit;
-      float depth = r.w8.at(3, x, y);
+      float depth = r.w64.at(3, x, y);
       bool gpu_hit = depth >= 0;
       if (gpu_hit != cpu.hit) {
         if (mask_bad++ < 5)
@@ -168,7 +168,7 @@ TEST_P(ExampleScene, MatchesCpuReferenceTracer) {
   // The brief's "not blank" in scene terms: where the CPU sees background
   // the kernel must show misses, and where it sees geometry, hits.
   int gpu_miss = 0, gpu_hit = 0;
-  for (float d : r.w8.plane(3)) gpu_miss += d < 0, gpu_hit += d >= 0;
+  for (float d : r.w64.plane(3)) gpu_miss += d < 0, gpu_hit += d >= 0;
   if (cpu_misses > 0) {
     EXPECT_GT(gpu_miss, 0) << "background visible on the CPU but no misses in the image";
   }

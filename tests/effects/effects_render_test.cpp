@@ -198,6 +198,13 @@ TEST(EffectsRender, EveryPacketShapeRendersTheSameImage) {
     EXPECT_EQ(std::memcmp(rows.image.data.data(), other.image.data.data(), rows.image.data.size() * sizeof(float)), 0)
         << "16 lanes as " << 16 / packet_rows << "x" << packet_rows;
   }
+  // packets wider than OpenCL's vectors (8x4 and 8x8) compute lane by lane the same floats
+  for (int width : {32, 64}) {
+    auto wide = render_text(scene, width, 20);
+    ASSERT_EQ(rows.image.data.size(), wide.image.data.size());
+    EXPECT_EQ(std::memcmp(rows.image.data.data(), wide.image.data.data(), rows.image.data.size() * sizeof(float)), 0)
+        << width << " lanes";
+  }
   // and one pixel per work-item agrees with the packets in nearly every pixel
   auto single = render_text(scene, 1, 20);
   int differing = 0;
@@ -212,7 +219,7 @@ TEST(EffectsRender, EveryEffectBuildsAtEveryWidthAndPrecision) {
     if (std::string(precision) == "double" && !test::device().info().fp64) continue;
     std::string scene = kAllEffects + "\n";
     scene.replace(scene.find("render: {"), 9, fmt::format("render: {{precision: {}, ", precision));
-    for (int width : {1, 4, 8, 16}) {
+    for (int width : {1, 4, 8, 16, 32, 64}) {
       auto r = render_text(scene, width);
       for (float v : r.image.data) ASSERT_TRUE(std::isfinite(v)) << precision << " width " << width;
     }

@@ -151,7 +151,7 @@ TEST(ObjectSetConformance, KernelWalkAgreesWithReferenceAndUnrolledKernel) {
     SCOPED_TRACE(c.name);
     ir::Module set = test::compile_text(c.yaml), code = unrolled(c.yaml);
     std::vector<V3> pts = points(512, c.spread);
-    for (int width : {1, 8, 16}) {
+    for (int width : {1, 8, 16, 64}) {
       SCOPED_TRACE(width);
       test::Probe probe(set, width), plain(code, width);
       ASSERT_FALSE(probe.emitted().scene_data.empty());

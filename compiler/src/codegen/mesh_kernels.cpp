@@ -6,6 +6,7 @@
 #include <string>
 
 #include "code_writer.hpp"
+#include "object_set_emitter.hpp"
 #include "scene_emitter.hpp"
 
 namespace sdfc::codegen {
@@ -81,9 +82,6 @@ void replace_all(std::string& s, const std::string& from, const std::string& to)
 }  // namespace
 
 EmittedKernel emit_mesh_kernels(const ir::Module& m, int simd_width) {
-  EmitOptions opt;
-  opt.simd_width = simd_width;
-  EmittedKernel k = emit_opencl(m, opt);
   std::string albedo;
   if (m.analyses.material_blend) {
     albedo = m.analyses.coloring_geometry
@@ -101,8 +99,11 @@ EmittedKernel emit_mesh_kernels(const ir::Module& m, int simd_width) {
   std::string entries = std::string(kClippedDistance) + colour_kernel(albedo);
   replace_all(entries, "TIME_FROM_GRID",
               std::string(m.analyses.uses_time ? "const scalar time = (scalar)g[10];" : "(void)g[10];") +
-                  (k.scene_data.empty() ? "" : "\n    __global const float* scene_data = g + 12;  // the object sets' numbers"));
-  k.source += entries;
+                  (detail::has_object_sets(m) ? "\n    __global const float* scene_data = g + 12;  // the object sets' numbers" : ""));
+  EmitOptions opt;
+  opt.simd_width = simd_width;
+  opt.extra_entries = entries;
+  EmittedKernel k = emit_opencl(m, opt);
   k.entry = "sdfc_mesh_blocks";
   return k;
 }

@@ -4,11 +4,13 @@
 // holds a lane mask, which every loop uses to freeze finished lanes.
 #include "prelude.hpp"
 
+#include "wide_lanes.hpp"
+
 #include <fmt/format.h>
 
 namespace sdfc::codegen::detail {
 
-std::string prelude(int width, int rows, ir::Precision precision, bool animated, int unlocked) {
+std::string prelude(int width, int rows, ir::Precision precision, bool animated, int unlocked, const std::string& body) {
   bool dbl = precision == ir::Precision::Double;
   std::string scalar = dbl ? "double" : "float";
   std::string m = dbl ? "long" : "int";  // vector comparisons give lanes as wide as the operands
@@ -31,7 +33,8 @@ std::string prelude(int width, int rows, ir::Precision precision, bool animated,
                : "#define LOAD_REAL(ptr) (*(ptr))\n#define STORE_REAL(v, ptr) (*(ptr) = (v))\n";
     out += "#define STORE_PACKET(v, ptr, stride) STORE_REAL(v, ptr)\n";
   } else {
-    out += fmt::format("typedef {0}{1} real;\ntypedef {2}{1} mask;\n", scalar, width, m);
+    if (width > 16) out += wide_lane_types(width, scalar, m, body);
+    else out += fmt::format("typedef {0}{1} real;\ntypedef {2}{1} mask;\n", scalar, width, m);
     out += "#define M_ANY(m) any(m)\n";
     out += "#define SEL(a, b, m) select((a), (b), (m))  /* per lane: m ? b : a */\n";
     std::string lanes;
@@ -44,9 +47,16 @@ std::string prelude(int width, int rows, ir::Precision precision, bool animated,
       ly += fmt::format("{}{}", i ? ", " : "", i / cols);
     }
     out += fmt::format("#define LANE_X ((real)({}))\n#define LANE_Y ((real)({}))\n", lx, ly);
-    out += dbl ? fmt::format("#define LOAD_REAL(ptr) convert_double{0}(vload{0}(0, (ptr)))\n"
-                             "#define STORE_REAL(v, ptr) vstore{0}(convert_float{0}(v), 0, (ptr))\n", width)
-               : fmt::format("#define LOAD_REAL(ptr) vload{0}(0, (ptr))\n#define STORE_REAL(v, ptr) vstore{0}((v), 0, (ptr))\n", width);
+    if (width > 16)  // lane by lane: only the probe and mesh kernels load and store whole packets
+      out += fmt::format("#define LOAD_REAL(ptr) load_lanes(ptr)\n#define STORE_REAL(v, ptr) store_lanes((v), (ptr))\n"
+                         "inline real load_lanes(__global const float* p) {{ real r; for (int i = 0; i < {0}; ++i) r[i] = p[i]; return r; }}\n"
+                         "inline void store_lanes(real v, __global float* p) {{ for (int i = 0; i < {0}; ++i) p[i] = (float)v[i]; }}\n",
+                         width);
+    else if (dbl)
+      out += fmt::format("#define LOAD_REAL(ptr) convert_double{0}(vload{0}(0, (ptr)))\n"
+                         "#define STORE_REAL(v, ptr) vstore{0}(convert_float{0}(v), 0, (ptr))\n", width);
+    else
+      out += fmt::format("#define LOAD_REAL(ptr) vload{0}(0, (ptr))\n#define STORE_REAL(v, ptr) vstore{0}((v), 0, (ptr))\n", width);
     if (rows == 1) {
       out += "#define STORE_PACKET(v, ptr, stride) STORE_REAL(v, ptr)\n";
     } else {
@@ -56,6 +66,11 @@ std::string prelude(int width, int rows, ir::Precision precision, bool animated,
         std::string sw;
         for (int c = 0; c < cols; ++c) sw += fmt::format("{:x}", r * cols + c);
         std::string part = fmt::format("(v).s{}", sw);
+        if (width > 16) {  // swizzles name 16 lanes at most
+          part = "__builtin_shufflevector((v), (v)";
+          for (int c = 0; c < cols; ++c) part += fmt::format(", {}", r * cols + c);
+          part += ")";
+        }
         if (cols == 1)
           out += fmt::format("    (ptr)[{} * (stride)] = (float)({}); \\\n", r, part);
         else

@@ -22,7 +22,7 @@ namespace sdfc::viewer {
 struct SceneOptions {
   std::string path;
   std::vector<std::string> sets;  // --set overrides, reapplied on every reload
-  int simd_width = 16;
+  int simd_width = 64;
   std::vector<UnlockRequest> unlocks = {};  // values the kernel reads per frame (the panel's live values)
 };
 

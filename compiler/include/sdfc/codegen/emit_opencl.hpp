@@ -16,15 +16,19 @@
 namespace sdfc::codegen {
 
 struct EmitOptions {
-  int simd_width = 1;  // 1 (GPUs, one pixel per work-item) or 2/4/8/16 (CPU packets)
+  int simd_width = 1;  // 1 (GPUs, one pixel per work-item) or 2/4/8/16/32/64 (CPU packets)
   bool probe_kernel = false;  // also emit sdfc_probe, which evaluates the distance at given points
   bool aovs = false;          // also store normal_x/y/z, steps and material planes after r, g, b, depth
-  // Pixel rows per packet, a power of two dividing simd_width; 0 picks the
-  // default: 4 at width 16 (4x4 tiles, which keep a packet's rays coherent), else 1.
+  // Pixel rows per packet, a power of two dividing simd_width; 0 picks
+  // default_packet_rows: packets as square as they come (4x4, 8x4, 8x8),
+  // which keeps their rays coherent.
   int packet_rows = 0;
   bool alpha = false;   // a camera ray that misses adds no colour: the colour is premultiplied by the hit plane
   bool linear = false;  // store the linear colour (after exposure, before the tone curve and gamma), for EXR
   bool steps_plane = false;  // without aovs: store only the steps plane after r, g, b, depth (the viewer's overlay)
+  // Kernels appended after the render kernel (the mesh sampler's entries); they may call
+  // anything the render kernel holds.
+  std::string extra_entries = {};
 };
 
 struct EmittedKernel {
@@ -44,6 +48,9 @@ struct EmittedKernel {
 };
 
 EmittedKernel emit_opencl(const ir::Module& m, const EmitOptions& opt = {});
+
+// The packet rows emit_opencl picks for a width: 4 at 16 and 32, 8 at 64, else 1.
+int default_packet_rows(int simd_width);
 
 // The frame parameter block (camera basis, pixel angle, time) the kernel
 // reads from `frame`; computed on the host per frame, so moving the camera
