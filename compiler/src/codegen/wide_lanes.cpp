@@ -119,7 +119,7 @@ std::string wide_lane_types(int width, const std::string& scalar, const std::str
   std::string out =
       "// OpenCL's vectors stop at 16 lanes: a wider packet is a Clang vector whose halves are\n"
       "// OpenCL's. Each builtin the kernel calls gets an overload for it: Clang's vector\n"
-      "// operations where OpenCL defines the builtin as one, else the builtin on the two halves.\n"
+      "// operations where they give OpenCL's result, else the builtin on the two halves.\n"
       "#define OVERLOADED __attribute__((overloadable)) inline\n";
   auto names = called_names(body);
   if (names.count("SEL")) names.emplace("select");  // the prelude's macros call these two
@@ -132,8 +132,10 @@ std::string wide_lane_types(int width, const std::string& scalar, const std::str
     out += fmt::format("typedef {0} {1} __attribute__((ext_vector_type({3})));\n"
                        "typedef {2} {4} __attribute__((ext_vector_type({3})));\n",
                        scalar, r, mask_scalar, w, m);
+    // A narrower level serves only the halves of the next: its Clang-operation forms would go unused.
     for (const Builtin* b : used)
-      for (const Form& form : b->forms) out += overload(b->name, form, r, m);
+      for (const Form& form : b->forms)
+        if (w == width || !form.body) out += overload(b->name, form, r, m);
   }
   out += fmt::format("typedef real{0} real;\ntypedef mask{0} mask;\n", width);
   return out;
