@@ -81,6 +81,13 @@ std::vector<V3> points(size_t n, double spread, unsigned seed = 3) {
   return p;
 }
 
+TEST(ObjectSetPass, GroupsCountByTheirPrimitivesGivenSixteenChildren) {
+  const size_t min_items = ir::object_set::kObjectSetMinItems;
+  EXPECT_EQ(count(test::compile_text(scene(kThreshold, kThreshold / min_items)), ir::Kind::ObjectSet), 1u);
+  EXPECT_EQ(count(test::compile_text(scene(min_items * 3, 3)), ir::Kind::ObjectSet), 0u);  // 16 children, 48 primitives
+  EXPECT_EQ(count(test::compile_text(scene((min_items - 1) * 8, 8)), ir::Kind::ObjectSet), 0u);  // 15 children
+}
+
 TEST(ObjectSetPass, GathersAtTheThresholdAndNotBelow) {
   ir::Module below = test::compile_text(scene(kThreshold - 1));
   EXPECT_EQ(count(below, ir::Kind::ObjectSet), 0u);

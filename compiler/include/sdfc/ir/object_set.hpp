@@ -22,7 +22,8 @@
 
 namespace sdfc::ir::object_set {
 
-inline constexpr size_t kObjectSetThreshold = 64;  // fewer children stay code: small scenes keep fully specialised kernels
+inline constexpr size_t kObjectSetThreshold = 64;  // fewer primitives stay code: small scenes keep fully specialised kernels
+inline constexpr size_t kObjectSetMinItems = 16;   // and fewer children: a hierarchy over a few items gains little
 inline constexpr size_t kHeader = 4;
 inline constexpr size_t kNodeFloats = 8, kItemFloats = 4, kPrimFloats = 8;
 inline constexpr size_t kLeafItems = 4;  // items per leaf of the hierarchy
