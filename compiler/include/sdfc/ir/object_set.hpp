@@ -1,8 +1,8 @@
 #pragma once
 // An object set: a large union of spheres and boxes (or of small smooth
 // unions of them) held as data instead of code. The gather_object_sets pass
-// makes one from a union with at least kObjectSetThreshold such children; the
-// kernel walks a bounding-volume hierarchy over it (stdlib/object_set.cl)
+// makes one from a union with at least kObjectSetMinItems such children
+// holding kObjectSetThreshold primitives in all; the kernel walks a bounding-volume hierarchy over it (stdlib/object_set.cl)
 // and reads the numbers from the scene data buffer that follows the frame
 // block, so kernel source and build time stay the same for any count.
 //
