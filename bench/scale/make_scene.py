@@ -2,15 +2,20 @@
 """Writes a bench/scale scene: N spheres and boxes with four materials,
 scattered over a fixed region above a floor (objects shrink as N grows, so
 every N shows the same amount of surface), either as one flat union or as
-N/4 smooth unions of four. Usage: make_scene.py N flat|groups > scene.yaml"""
+N/G smooth unions of G (four unless given). Usage:
+make_scene.py N flat|groups [G] > scene.yaml"""
 import random
 import sys
 
 
 def main():
-    if len(sys.argv) != 3 or sys.argv[2] not in ("flat", "groups") or not sys.argv[1].isdigit():
+    args = sys.argv[1:]
+    if len(args) not in (2, 3) or args[1] not in ("flat", "groups") or not all(a.isdigit() for a in args[::2]):
         sys.exit(__doc__)
-    n, kind = int(sys.argv[1]), sys.argv[2]
+    n, kind = int(args[0]), args[1]
+    group = int(args[2]) if len(args) == 3 else 4
+    if group < 1:
+        sys.exit(__doc__)
     rng = random.Random(22)
     size = 2.2 / n ** (1 / 3)  # the spacing of N points in the 8x8x4 region
     out = [
@@ -49,10 +54,10 @@ def main():
             out += shape("    ", 0.4 * size)
             out += [f"      translate: {c}", f"      material: {mats[i % 4]}"]
     else:
-        for i in range(n // 4):
+        for i in range(n // group):
             c = place()
             out += ["    - smooth_union:", f"        radius: {round(0.25 * size, 4)}", "        children:"]
-            for _ in range(4):
+            for _ in range(group):
                 out += shape("          ", 0.3 * size)
                 off = [round(c[k] + rng.uniform(-0.4, 0.4) * size, 4) for k in range(3)]
                 out += [f"            translate: {off}"]

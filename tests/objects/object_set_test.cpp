@@ -24,7 +24,8 @@ namespace sdfc {
 namespace {
 
 using test::V3;
-constexpr size_t kThreshold = ir::object_set::kObjectSetThreshold;
+namespace os = ir::object_set;
+constexpr size_t kThreshold = os::kLargeGroupSetMinPrims;  // this many scattered shapes are a set by either rule
 
 const char* kHead =
     "camera: {position: [0, -9, 5], target: [0, 0, 1], up: [0, 0, 1], fov: 50}\n"
@@ -81,25 +82,30 @@ std::vector<V3> points(size_t n, double spread, unsigned seed = 3) {
   return p;
 }
 
-TEST(ObjectSetPass, GroupsCountByTheirPrimitivesGivenSixteenChildren) {
-  const size_t min_items = ir::object_set::kObjectSetMinItems;
-  EXPECT_EQ(count(test::compile_text(scene(kThreshold, kThreshold / min_items)), ir::Kind::ObjectSet), 1u);
-  EXPECT_EQ(count(test::compile_text(scene(min_items * 3, 3)), ir::Kind::ObjectSet), 0u);  // 16 children, 48 primitives
-  EXPECT_EQ(count(test::compile_text(scene((min_items - 1) * 8, 8)), ir::Kind::ObjectSet), 0u);  // 15 children
+TEST(ObjectSetPass, SmallGroupsGatherFromADozenPrimitivesLargeOnesOnlyInNumbers) {
+  auto sets = [](size_t n, size_t group) { return count(test::compile_text(scene(n, group)), ir::Kind::ObjectSet); };
+  EXPECT_EQ(sets(os::kSetMinChildren * 3, 3), 1u);         // 4 groups of three: 12 primitives
+  EXPECT_EQ(sets((os::kSetMinChildren - 1) * 4, 4), 0u);   // 3 groups of four: too few children
+  EXPECT_EQ(sets(os::kSetMinChildren * 2, 2), 0u);         // 4 pairs: 8 primitives
+  EXPECT_EQ(sets(8 * 8, 8), 0u);                           // 8 groups of eight: large groups, too few
+  EXPECT_EQ(sets((os::kLargeGroupSetMinChildren - 1) * 8, 8), 0u);  // 15 of them
+  EXPECT_EQ(sets(os::kLargeGroupSetMinChildren * 5, 5), 1u);        // 16 groups of five: 80 primitives
+  EXPECT_EQ(sets(os::kLargeGroupSetMinChildren * 3, 3), 1u);        // 16 groups of three
 }
 
 TEST(ObjectSetPass, GathersAtTheThresholdAndNotBelow) {
-  ir::Module below = test::compile_text(scene(kThreshold - 1));
+  const size_t threshold = os::kSetMinPrims;
+  ir::Module below = test::compile_text(scene(threshold - 1));
   EXPECT_EQ(count(below, ir::Kind::ObjectSet), 0u);
-  EXPECT_EQ(count(below, ir::Kind::Translate), kThreshold - 1);  // one per object (equal shapes share a node)
-  ir::Module at = test::compile_text(scene(kThreshold));
+  EXPECT_EQ(count(below, ir::Kind::Translate), threshold - 1);  // one per object (equal shapes share a node)
+  ir::Module at = test::compile_text(scene(threshold));
   EXPECT_EQ(count(at, ir::Kind::ObjectSet), 1u);
   EXPECT_EQ(count(at, ir::Kind::Translate) + count(at, ir::Kind::Sphere) + count(at, ir::Kind::Box), 0u);
   EXPECT_EQ(ir::object_set::View{at.graph->node(at.root).kind == ir::Kind::ObjectSet
                                      ? at.graph->node(at.root).params
                                      : at.graph->node(at.graph->node(at.root).children[0]).params}
                 .items(),
-            kThreshold);
+            threshold);
 }
 
 TEST(ObjectSetPass, LeavesWhatItCannotHoldAsCode) {

@@ -1,7 +1,7 @@
-// gather_object_sets: a union with at least kObjectSetMinItems children
-// that are spheres or boxes (translated, with or without a material) or
-// small smooth unions of them, holding kObjectSetThreshold primitives in
-// all, becomes one object_set node whose numbers are
+// gather_object_sets: a union whose children that are spheres or boxes
+// (translated, with or without a material) or small smooth unions of them
+// are worth_a_set (sdfc/ir/object_set.hpp: enough of them, holding enough
+// primitives) becomes one object_set node whose numbers are
 // data (sdfc/ir/object_set.hpp): the kernel walks a bounding-volume
 // hierarchy over them instead of evaluating every child at every step, and
 // its source no longer grows with the scene. Smaller unions stay code, so
@@ -98,7 +98,7 @@ ir::Module gather_object_sets(ir::Module m) {
       b.graph().mutable_node(id).props = p;
       return id;
     };
-    if (n.kind != Kind::Union || n.children.size() < os::kObjectSetMinItems) return keep(std::move(kids));
+    if (n.kind != Kind::Union || n.children.size() < os::kSetMinChildren) return keep(std::move(kids));
     std::vector<os::Item> items;
     std::vector<ir::NodeId> rest;
     for (size_t i = 0; i < n.children.size(); ++i) {
@@ -108,7 +108,7 @@ ir::Module gather_object_sets(ir::Module m) {
     }
     size_t prims = 0;
     for (const os::Item& it : items) prims += it.prims.size();
-    if (items.size() < os::kObjectSetMinItems || prims < os::kObjectSetThreshold) return keep(std::move(kids));
+    if (!os::worth_a_set(items.size(), prims)) return keep(std::move(kids));
     const double cost = os::worst_cost(items);  // a walk, not every child
     std::vector<double> q = os::pack(std::move(items), offset);
     offset += q.size() - os::kHeader;

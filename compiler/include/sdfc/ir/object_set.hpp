@@ -1,8 +1,8 @@
 #pragma once
 // An object set: a large union of spheres and boxes (or of small smooth
 // unions of them) held as data instead of code. The gather_object_sets pass
-// makes one from a union with at least kObjectSetMinItems such children
-// holding kObjectSetThreshold primitives in all; the kernel walks a bounding-volume hierarchy over it (stdlib/object_set.cl)
+// makes one from a union whose such children are worth_a_set; the kernel
+// walks a bounding-volume hierarchy over it (stdlib/object_set.cl)
 // and reads the numbers from the scene data buffer that follows the frame
 // block, so kernel source and build time stay the same for any count.
 //
@@ -22,8 +22,18 @@
 
 namespace sdfc::ir::object_set {
 
-inline constexpr size_t kObjectSetThreshold = 64;  // fewer primitives stay code: small scenes keep fully specialised kernels
-inline constexpr size_t kObjectSetMinItems = 16;   // and fewer children: a hierarchy over a few items gains little
+// Which unions become sets. A leaf of the hierarchy evaluates every
+// primitive of its items, so children of four primitives or fewer (on
+// average) pay from a dozen primitives, and larger groups only in numbers,
+// where code's box test in front of each group loses to the walk. Smaller
+// unions stay code: small scenes keep their fully specialised kernels.
+inline constexpr size_t kSetMinChildren = 4, kSetMinPrims = 12, kSetMaxMeanPrims = 4;
+inline constexpr size_t kLargeGroupSetMinChildren = 16, kLargeGroupSetMinPrims = 64;
+// Whether `children` gatherable children holding `prims` primitives in all become a set.
+inline bool worth_a_set(size_t children, size_t prims) {
+  if (children >= kLargeGroupSetMinChildren && prims >= kLargeGroupSetMinPrims) return true;
+  return children >= kSetMinChildren && prims >= kSetMinPrims && prims <= kSetMaxMeanPrims * children;
+}
 inline constexpr size_t kHeader = 4;
 inline constexpr size_t kNodeFloats = 8, kItemFloats = 4, kPrimFloats = 8;
 inline constexpr size_t kLeafItems = 4;  // items per leaf of the hierarchy
