@@ -29,7 +29,7 @@ inline real fx_tent(real u)
 }
 
 //! fn march_sphere_trace_closest
-//! deps: vec3_ops
+//! deps: vec3_ops, march_advance
 //! after-scene
 //! class: helper
 // march_sphere_trace that also returns the closest approach (the smallest
@@ -46,12 +46,7 @@ inline mask march_sphere_trace_closest(TIME_PARAM vec3 ro, vec3 rd, real t0, rea
     for (int i = 0; i < max_steps && M_ANY(active); ++i) {
         real d = scene_dist_inline(TIME_ARG v3_mad(ro, rd, t), active);
         c = SEL(c, fmin(c, d), active);
-        mask now_hit = active & (d < hit_eps * pixel_angle * fmax(t, K(1e-4f)));
-        hit = hit | now_hit;
-        active = active & !now_hit;
-        n = SEL(n, n + 1.0f, active | now_hit);
-        t = SEL(t, t + d * step_factor, active);
-        active = active & (t < t1);
+        march_advance(d, t1, pixel_angle, hit_eps, step_factor, &t, &active, &hit, &n);
     }
     *t_out = t;
     *steps = n;

@@ -1,5 +1,5 @@
 //! fn march_signed
-//! deps: vec3_ops
+//! deps: vec3_ops, march_advance
 //! after-scene
 //! class: helper
 // Sphere tracing as march_sphere_trace, on side * scene_dist: side 1 marches
@@ -16,12 +16,7 @@ inline mask march_signed(TIME_PARAM vec3 ro, vec3 rd, real side, real t0, real t
     real n = 0.0f;
     for (int i = 0; i < max_steps && M_ANY(active); ++i) {
         real d = side * scene_dist_inline(TIME_ARG v3_mad(ro, rd, t), active);
-        mask now_hit = active & (d < hit_eps * pixel_angle * fmax(t, K(1e-4f)));
-        hit = hit | now_hit;
-        active = active & !now_hit;
-        n = SEL(n, n + 1.0f, active | now_hit);
-        t = SEL(t, t + d * step_factor, active);
-        active = active & (t < t1);
+        march_advance(d, t1, pixel_angle, hit_eps, step_factor, &t, &active, &hit, &n);
     }
     *t_out = t;
     *steps = n;

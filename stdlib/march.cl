@@ -17,8 +17,25 @@ inline mask ray_box(vec3 ro, vec3 rd, vec3 lo, vec3 hi, real* t0, real* t1)
     return (tf >= tn) & (tf > 0.0f);
 }
 
+//! fn march_advance
+//! class: helper
+// One step of a sphere trace, shared by the marching loops: a lane whose
+// distance d is under the hit band at t (hit_eps pixels) stops with a hit;
+// the others step by d times step_factor and stop past t1. `n` counts each
+// lane's steps.
+inline void march_advance(real d, real t1, real pixel_angle, real hit_eps, real step_factor, real* t, mask* active,
+                          mask* hit, real* n)
+{
+    mask now_hit = *active & (d < hit_eps * pixel_angle * fmax(*t, K(1e-4f)));
+    *hit = *hit | now_hit;
+    *active = *active & !now_hit;
+    *n = SEL(*n, *n + 1.0f, *active | now_hit);
+    *t = SEL(*t, *t + d * step_factor, *active);
+    *active = *active & (*t < t1);
+}
+
 //! fn march_sphere_trace
-//! deps: vec3_ops
+//! deps: vec3_ops, march_advance
 //! after-scene
 //! class: helper
 // Sphere tracing from t0 to t1. A lane hits when the distance drops below
@@ -34,12 +51,7 @@ inline mask march_sphere_trace(TIME_PARAM vec3 ro, vec3 rd, real t0, real t1, ma
     real n = 0.0f;
     for (int i = 0; i < max_steps && M_ANY(active); ++i) {
         real d = scene_dist_inline(TIME_ARG v3_mad(ro, rd, t), active);
-        mask now_hit = active & (d < hit_eps * pixel_angle * fmax(t, K(1e-4f)));
-        hit = hit | now_hit;
-        active = active & !now_hit;
-        n = SEL(n, n + 1.0f, active | now_hit);
-        t = SEL(t, t + d * step_factor, active);
-        active = active & (t < t1);
+        march_advance(d, t1, pixel_angle, hit_eps, step_factor, &t, &active, &hit, &n);
     }
     *t_out = t;
     *steps = n;

@@ -19,8 +19,62 @@ inline real os_item(vec3 p, __global const float* item, __global const float* pr
     return d;
 }
 
+//! fn os_cone
+//! deps: vec3_ops
+//! class: helper
+// The cone from the camera that holds a packet's camera rays and the hit
+// band around each: an object set's items outside it can neither stop those
+// rays nor come within the hit band of them, so the camera march walks only
+// the boxes that reach into it (os_in_cone) and steps by the distance to
+// those items. The steps are longer than the whole set's distance allows,
+// but still safe: a step stays inside the ray's ball free of the items in
+// the cone, and inside the cone, which holds none of the others.
+typedef struct
+{
+    scalar ox, oy, oz;    // apex: the camera
+    scalar ax, ay, az;    // unit axis
+    scalar cos_a, sin_a;  // half-angle, margin included
+    int on;               // 0: no cone (every other ray): the whole set counts
+} os_cone;
+
+inline os_cone os_cone_none(void)
+{
+    os_cone c = {0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0};
+    return c;
+}
+
+// Whether the ball of radius r about (x, y, z) may reach into the cone.
+// perp cos a - along sin a is at most 0 inside the cone and changes no
+// faster than the point moves, so where it exceeds r at the centre, the
+// whole ball is outside.
+inline bool os_ball_in_cone(const os_cone c, scalar x, scalar y, scalar z, scalar r)
+{
+    const scalar vx = x - c.ox, vy = y - c.oy, vz = z - c.oz;
+    const scalar along = vx * c.ax + vy * c.ay + vz * c.az;
+    const scalar wx = vx - along * c.ax, wy = vy - along * c.ay, wz = vz - along * c.az;
+    return sqrt(wx * wx + wy * wy + wz * wz) * c.cos_a - along * c.sin_a <= r;
+}
+
+// Whether the box (lo xyz, hi xyz) may reach into the cone: its ball may.
+inline bool os_in_cone(const os_cone c, __global const float* b)
+{
+    if (!c.on) return true;
+    const scalar hx = 0.5f * (b[3] - b[0]), hy = 0.5f * (b[4] - b[1]), hz = 0.5f * (b[5] - b[2]);
+    return os_ball_in_cone(c, b[0] + hx, b[1] + hy, b[2] + hz, sqrt(hx * hx + hy * hy + hz * hz));
+}
+
+// Whether an item of one sphere or box may reach into the cone (a smooth
+// group is left to its leaf's box, which holds the blend's reach).
+inline bool os_item_in_cone(const os_cone c, __global const float* item, __global const float* prims)
+{
+    if (!c.on || item[1] != 1.0f) return true;
+    __global const float* r = prims + 8 * (int)item[0];
+    const scalar radius = r[0] == 0.0f ? (scalar)r[4] : sqrt((scalar)(r[4] * r[4] + r[5] * r[5] + r[6] * r[6]));
+    return os_ball_in_cone(c, r[1], r[2], r[3], radius);
+}
+
 //! fn os_union
-//! deps: vec3_ops, os_item
+//! deps: vec3_ops, os_item, os_cone
 //! class: bound
 // The nearest item of an object set, and its material: a walk of the
 // bounding-volume hierarchy that skips a node while every lane's nearest
@@ -38,6 +92,7 @@ inline real os_item(vec3 p, __global const float* item, __global const float* pr
 // Only `live` lanes open boxes: in a marching loop the lanes that have
 // stopped still evaluate, but their values are thrown away, and a stopped
 // lane sits on a surface, where its path down the hierarchy is its own.
+// With a cone (os_cone: camera rays) only the boxes reaching into it count.
 #define OS_STACK 64
 // The box's signed distance times its magnitude: it orders as the distance
 // does without a square root, so the walk compares it with best * |best|.
@@ -60,7 +115,7 @@ inline real os_box_sq(vec3 p, __global const float* b)
 #define OS_NEAREST(d, live) __builtin_reduce_min(__builtin_astype(SEL(K(1e30f), (d), (live)), mask))
 #endif
 inline real os_union(vec3 p, __global const float* s, const int n_nodes, const int n_items, const real bound,
-                     const mask live, real* mat)
+                     const mask live, const os_cone cone, real* mat)
 {
     __global const float* items = s + 8 * n_nodes;
     __global const float* prims = items + 4 * n_items;
@@ -68,8 +123,10 @@ inline real os_union(vec3 p, __global const float* s, const int n_nodes, const i
     int stack[OS_STACK];
     real box[OS_STACK];
     int top = 0;
-    stack[top] = 0;
-    box[top++] = os_box_sq(p, s);
+    if (os_in_cone(cone, s)) {
+        stack[top] = 0;
+        box[top++] = os_box_sq(p, s);
+    }
     while (top > 0) {
         --top;
         if (!M_ANY(live & (box[top] < best * fabs(best)))) continue;
@@ -78,15 +135,24 @@ inline real os_union(vec3 p, __global const float* s, const int n_nodes, const i
         const int first = (int)b[6], count = (int)b[7];
         if (count > 0) {
             for (int i = first; i < first + count; ++i) {
+                if (!os_item_in_cone(cone, items + 4 * i, prims)) continue;
                 real d = os_item(p, items + 4 * i, prims);
                 m = SEL(m, (real)items[4 * i + 3], d < best);
                 best = fmin(best, d);
             }
         } else {
             const int left = node + 1;
-            const real dl = os_box_sq(p, s + 8 * left), dr = os_box_sq(p, s + 8 * first);
             const real best_sq = best * fabs(best);
-            const bool need_l = M_ANY(live & (dl < best_sq)), need_r = M_ANY(live & (dr < best_sq));
+            real dl = best_sq, dr = best_sq;
+            bool need_l = false, need_r = false;
+            if (os_in_cone(cone, s + 8 * left)) {
+                dl = os_box_sq(p, s + 8 * left);
+                need_l = M_ANY(live & (dl < best_sq));
+            }
+            if (os_in_cone(cone, s + 8 * first)) {
+                dr = os_box_sq(p, s + 8 * first);
+                need_r = M_ANY(live & (dr < best_sq));
+            }
             if (need_l && need_r) {
                 const bool left_near = OS_NEAREST(dl, live) < OS_NEAREST(dr, live);
                 stack[top] = left_near ? first : left;  // the far child waits below the near one
@@ -101,4 +167,66 @@ inline real os_union(vec3 p, __global const float* s, const int n_nodes, const i
     }
     *mat = m;
     return best;
+}
+
+//! fn os_camera_cone
+//! deps: os_cone
+//! class: helper
+#if SDFC_WIDTH == 1
+#define OS_LANES_MIN(x) (x)
+#define OS_LANES_MAX(x) (x)
+#else
+#define OS_LANES_MIN(x) __builtin_reduce_min(x)
+#define OS_LANES_MAX(x) __builtin_reduce_max(x)
+#endif
+
+// The cone of the rays from ro (one point for every lane: a pinhole camera)
+// along the unit directions rd, widened by twice `band` radians (the hit
+// band's angle: hit epsilon times the pixel angle), so rounding cannot
+// shave the band. A cone wider than about 78 degrees would cull little: none.
+inline os_cone os_camera_cone(vec3 ro, vec3 rd, real band)
+{
+    os_cone c;
+    c.ox = OS_LANES_MIN(ro.x);
+    c.oy = OS_LANES_MIN(ro.y);
+    c.oz = OS_LANES_MIN(ro.z);
+    const scalar ax = OS_LANES_MIN(rd.x) + OS_LANES_MAX(rd.x), ay = OS_LANES_MIN(rd.y) + OS_LANES_MAX(rd.y),
+                 az = OS_LANES_MIN(rd.z) + OS_LANES_MAX(rd.z);
+    const scalar len = sqrt(ax * ax + ay * ay + az * az);
+    c.ax = ax / len;
+    c.ay = ay / len;
+    c.az = az / len;
+    const scalar cos_t = fmin(OS_LANES_MIN(rd.x * c.ax + rd.y * c.ay + rd.z * c.az), K(1.0f));
+    const scalar sin_t = sqrt(fmax(K(1.0f) - cos_t * cos_t, K(0.0f)));
+    const scalar m = 2.0f * OS_LANES_MAX(band);
+    const scalar cos_m = cos(m), sin_m = sin(m);
+    c.cos_a = cos_t * cos_m - sin_t * sin_m;
+    c.sin_a = sin_t * cos_m + cos_t * sin_m;
+    c.on = len > 0.0f && c.cos_a > 0.2f;
+    return c;
+}
+
+//! fn march_sphere_trace_cone
+//! deps: vec3_ops, os_cone, march_advance
+//! after-scene
+//! class: helper
+// march_sphere_trace for camera rays in a scene with object sets: the
+// distance counts only the items that reach into the packet's cone
+// (os_cone), so a ray passing small objects beside its path steps past
+// them. It hits what the full distance would: an item outside the cone is
+// farther from every point of the rays than the hit band.
+inline mask march_sphere_trace_cone(TIME_PARAM vec3 ro, vec3 rd, real t0, real t1, mask active,
+                                    real pixel_angle, real hit_eps, real step_factor,
+                                    int max_steps, real* t_out, real* steps, const os_cone cone)
+{
+    real t = t0;
+    mask hit = active & !active;
+    real n = 0.0f;
+    for (int i = 0; i < max_steps && M_ANY(active); ++i) {
+        real d = scene_dist_cone(TIME_ARG v3_mad(ro, rd, t), active, cone);
+        march_advance(d, t1, pixel_angle, hit_eps, step_factor, &t, &active, &hit, &n);
+    }
+    *t_out = t;
+    *steps = n;
+    return hit;
 }

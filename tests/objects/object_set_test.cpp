@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <random>
+#include <regex>
 
 #include "sdfc/codegen/emit_opencl.hpp"
 #include "sdfc/compile.hpp"
@@ -180,8 +181,11 @@ TEST(ObjectSetConformance, KernelWalkAgreesWithReferenceAndUnrolledKernel) {
   }
 }
 
-sdfrt::FloatImage render(const ir::Module& m, const codegen::EmitOptions& opt = {16}) {
+// Camera rays march in their packet's cone (os_cone); `cones` false gives
+// them none, as every other ray, so the set's distance is the whole union's.
+sdfrt::FloatImage render(const ir::Module& m, const codegen::EmitOptions& opt = {16}, bool cones = true) {
   codegen::EmittedKernel k = codegen::emit_opencl(m, opt);
+  if (!cones) k.source = std::regex_replace(k.source, std::regex(R"(os_camera_cone\([^;]*\);)"), "os_cone_none();");
   sdfrt::Renderer r(test::device(), {k.source, k.entry, k.simd_width, k.packet_rows, k.planes, "", k.scene_data});
   const int w = m.plan.march.width, h = m.plan.march.height;
   return r.render(codegen::frame_params(m.plan, w, h, 0.0), w, h);
@@ -193,7 +197,7 @@ TEST(ObjectSetRender, SameImageAsTheUnrolledUnion) {
     ir::Module set = test::compile_text(c.yaml), code = unrolled(c.yaml);
     codegen::EmitOptions opt{16};
     opt.aovs = true;  // the material plane too
-    sdfrt::FloatImage a = render(set, opt), b = render(code, opt);
+    sdfrt::FloatImage a = render(set, opt, false), b = render(code, opt);
     ASSERT_EQ(a.data.size(), b.data.size());
     size_t differ = 0, hits = 0;
     for (size_t i = 0; i < a.data.size(); ++i) differ += a.data[i] != b.data[i];
@@ -203,6 +207,61 @@ TEST(ObjectSetRender, SameImageAsTheUnrolledUnion) {
       EXPECT_GT(hits, 0u);  // the objects are in view
     }
   }
+}
+
+// In its cone a camera ray steps past the items beside its path, so it
+// lands elsewhere within the hit band, but it hits what the whole union's
+// march hits (the march without cones, which renders the unrolled union's
+// image above): the two hit masks differ only on silhouettes (a pixel whose
+// neighbour's hit differs without cones), never inside an object, at every
+// packet width (one lane: the thinnest cone).
+TEST(ObjectSetRender, CameraConesHitWhatTheWholeUnionHits) {
+  for (const Case& c : cases()) {
+    SCOPED_TRACE(c.name);
+    ir::Module set = test::compile_text(c.yaml);
+    for (int width : {1, 16, 64}) {
+      SCOPED_TRACE(width);
+      codegen::EmitOptions opt{width};
+      opt.aovs = true;
+      ASSERT_NE(codegen::emit_opencl(set, opt).source.find("= os_camera_cone("), std::string::npos);
+      sdfrt::FloatImage a = render(set, opt), b = render(set, opt, false);
+      auto ha = a.plane(a.plane_index("hit")), hb = b.plane(b.plane_index("hit"));
+      const int w = a.width, h = a.height;
+      auto edge = [&](int x, int y) {
+        for (auto [dx, dy] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+          int u = x + dx, v = y + dy;
+          if (u >= 0 && v >= 0 && u < w && v < h && (hb[size_t(v * w + u)] > 0) != (hb[size_t(y * w + x)] > 0)) return true;
+        }
+        return false;
+      };
+      size_t silhouette = 0;
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+          if ((ha[size_t(y * w + x)] > 0) != (hb[size_t(y * w + x)] > 0)) {
+            EXPECT_TRUE(edge(x, y)) << "pixel " << x << ", " << y;
+            ++silhouette;
+          }
+      EXPECT_LT(silhouette, size_t(w * h) / 100);
+    }
+  }
+}
+
+// Only camera rays through a pinhole whose march feeds nothing but the hit
+// get a cone: depth of field moves the rays' origins; glow, occlusion from
+// the step count and bisection read the march itself; the path integrator
+// has its own.
+TEST(ObjectSetKernel, CameraConesOnlyWhereTheMarchFeedsOnlyTheHit) {
+  auto cones = [](const std::vector<std::string>& sets) {
+    return codegen::emit_opencl(test::compile_text(scene(100), "test.yaml", sets), {16}).source.find("= os_camera_cone(") !=
+           std::string::npos;
+  };
+  EXPECT_TRUE(cones({}));
+  EXPECT_TRUE(cones({"effects.ambient_occlusion.method=normal_samples"}));
+  EXPECT_FALSE(cones({"camera.aperture=0.1"}));
+  EXPECT_FALSE(cones({"effects.glow.strength=1"}));
+  EXPECT_FALSE(cones({"effects.ambient_occlusion.method=step_count"}));
+  EXPECT_FALSE(cones({"render.refine=bisection"}));
+  EXPECT_FALSE(cones({"render.integrator=path"}));
 }
 
 TEST(ObjectSetKernel, SourceSizeDoesNotGrowWithTheCount) {
@@ -222,11 +281,12 @@ TEST(ObjectSetKernel, OnlyTheMarchingDistanceMasksTheWalk) {
     EXPECT_NE(at, std::string::npos) << signature;
     return at == std::string::npos ? std::string() : k.substr(at, k.find("\n}\n", at) - at);
   };
-  const std::string marching = body("real scene_dist_inline(TIME_PARAM vec3 p, mask live)");
+  const std::string marching = body("real scene_dist_cone(TIME_PARAM vec3 p, mask live, const os_cone cone)");
   EXPECT_NE(marching.find("os_union("), std::string::npos);
-  EXPECT_NE(marching.find(", live, &"), std::string::npos);
+  EXPECT_NE(marching.find(", live, cone, &"), std::string::npos);
+  EXPECT_NE(k.find("{ return scene_dist_cone(TIME_ARG p, live, os_cone_none()); }"), std::string::npos);
   const std::string with_material = body("real scene_dist_mat(TIME_PARAM vec3 p, real* mat)");
-  EXPECT_NE(with_material.find(", M_TRUE, &"), std::string::npos);
+  EXPECT_NE(with_material.find(", M_TRUE, os_cone_none(), &"), std::string::npos);
   EXPECT_NE(k.find("return scene_dist_inline(TIME_ARG p, M_TRUE);"), std::string::npos);
 }
 

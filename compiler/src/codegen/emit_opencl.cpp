@@ -103,7 +103,7 @@ EmittedKernel emit_opencl(const ir::Module& m, const EmitOptions& opt) {
   std::string shading = path ? std::string() : detail::emit_shading(detail::with_trap_ranges(m), facts, lit, used);
   if (facts.material_blend) shading += "\n" + detail::emit_scene_material(m, lit, used);
   std::string kernel = path ? detail::path_functions(m, detail::with_trap_ranges(m), lit, used, opt.aovs) + "\n"
-                            : detail::segment_function(m, lit, used) + "\n" + detail::radiance_function(m, used) + "\n";
+                            : detail::segment_function(m, lit, used) + "\n" + detail::radiance_function(m, lit, used) + "\n";
   kernel += detail::render_kernel(m, lit, used, opt);
   // With object sets the probes take the scene data as their last argument.
   const bool data = detail::has_object_sets(m);

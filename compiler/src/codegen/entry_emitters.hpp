@@ -17,7 +17,7 @@ namespace sdfc::codegen::detail {
 // false, emitting nothing, for an unbounded scene.
 bool bounds_clip(CodeWriter& w, const ir::Module& m, const Literals& lit, std::set<std::string>& used);
 std::string segment_function(const ir::Module& m, const Literals& lit, std::set<std::string>& used);
-std::string radiance_function(const ir::Module& m, std::set<std::string>& used);
+std::string radiance_function(const ir::Module& m, const Literals& lit, std::set<std::string>& used);
 // The path integrator's functions (render.integrator: path): the material
 // table, the path's materials, sdfc_path_hit and sdfc_path. plan: the
 // module's plan with the orbit traps' measured ranges.

@@ -34,6 +34,14 @@ bool has_object_sets(const ir::Module& m) {
   return false;
 }
 
+bool camera_cones(const ir::Module& m) {
+  const ir::Effects& fx = m.plan.effects;
+  return has_object_sets(m) && m.plan.transport.integrator == ir::Transport::Integrator::Direct &&
+         m.plan.camera.aperture == 0 &&
+         m.plan.march.refine != ir::MarchSettings::Refine::Bisection && !fx.glow.enabled &&
+         !(fx.ambient_occlusion.enabled && fx.ambient_occlusion.method == ir::AmbientOcclusion::Method::StepCount);
+}
+
 std::string scene_data_macros(bool animated, int unlocked) {
   std::string time = unlocked > 0 ? "const scalar time, __global const float* unlocked," : animated ? "const scalar time," : "";
   std::string arg = unlocked > 0 ? "time, unlocked," : animated ? "time," : "";

@@ -15,6 +15,13 @@ namespace sdfc::codegen::detail {
 std::vector<float> scene_data(const ir::Module& m);
 bool has_object_sets(const ir::Module& m);
 
+// Whether the camera rays march in their packet's cone (os_cone in the
+// stdlib): a scene with object sets seen through a pinhole by the direct
+// integrator, whose march feeds nothing but the hit (no glow, no occlusion
+// from the step count, no bisection). Their steps change with the cone; the
+// hits do not.
+bool camera_cones(const ir::Module& m);
+
 // The prelude's addition: scene functions take the buffer after the time.
 std::string scene_data_macros(bool animated, int unlocked);
 

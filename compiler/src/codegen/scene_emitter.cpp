@@ -2,6 +2,7 @@
 // (scene_walker.hpp) carrying what that function returns.
 #include "scene_emitter.hpp"
 
+#include "object_set_emitter.hpp"
 #include "scene_walker.hpp"
 
 namespace sdfc::codegen::detail {
@@ -10,12 +11,15 @@ namespace {
 
 // `signature { <the walk at p> <epilogue(value)> }`
 // `live`: the mask parameter of the lanes still marching, if the function has one.
+// `cone`: the camera rays' cone parameter, if the function has one.
 template <class Epilogue>
 std::string function(const ir::Module& m, const Literals& lit, std::set<std::string>& used, Carry carry,
-                     const std::string& signature, Epilogue epilogue, const std::string& live = "") {
+                     const std::string& signature, Epilogue epilogue, const std::string& live = "",
+                     const std::string& cone = "") {
   CodeWriter w;
   SceneWalker walker(m, lit, used, w, carry);
   if (!live.empty()) walker.live_lanes = live;
+  if (!cone.empty()) walker.cone = cone;
   w.line(signature);
   w.open("{");
   kinds::Carried v = walker.emit(m.root, "p");
@@ -61,14 +65,22 @@ std::string emit_scene_functions(const ir::Module& m, const Literals& lit, std::
   // or so, not once per call site (a cold build +130 ms, not +260 ms).
   // `live` masks the lanes still marching (stopped lanes' values are not
   // used): an object set's walk opens no box for the others.
+  auto ret = [](CodeWriter& w, const kinds::Carried& v) {
+    w.line("(void)live;");
+    w.line("return " + v.d + ";");
+  };
   std::string out = "// ---- scene distance: the marching loops inline this at every step ----\n";
-  out += function(m, lit, used, Carry::Distance,
-                  "inline __attribute__((always_inline)) real scene_dist_inline(TIME_PARAM vec3 p, mask live)",
-                  [](CodeWriter& w, const kinds::Carried& v) {
-                    w.line("(void)live;");
-                    w.line("return " + v.d + ";");
-                  },
-                  "live");
+  if (camera_cones(m)) {  // the camera rays' march passes its packet's cone; the others none
+    out += function(m, lit, used, Carry::Distance,
+                    "inline __attribute__((always_inline)) real scene_dist_cone(TIME_PARAM vec3 p, mask live, const os_cone cone)",
+                    ret, "live", "cone");
+    out += "inline __attribute__((always_inline)) real scene_dist_inline(TIME_PARAM vec3 p, mask live) "
+           "{ return scene_dist_cone(TIME_ARG p, live, os_cone_none()); }\n";
+  } else {
+    out += function(m, lit, used, Carry::Distance,
+                    "inline __attribute__((always_inline)) real scene_dist_inline(TIME_PARAM vec3 p, mask live)", ret,
+                    "live");
+  }
   out += "\n// ---- scene distance, called: every use outside the marching loops ----\n";
   out += "__attribute__((noinline)) real scene_dist(TIME_PARAM vec3 p) { return scene_dist_inline(TIME_ARG p, M_TRUE); }\n";
   out += "\n// ---- scene distance with material: evaluated once per hit ----\n";

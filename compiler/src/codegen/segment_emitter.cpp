@@ -6,6 +6,7 @@
 #include <set>
 
 #include "entry_emitters.hpp"
+#include "object_set_emitter.hpp"
 #include "shading_emitter.hpp"
 
 namespace sdfc::codegen::detail {
@@ -43,8 +44,9 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
   for (const auto& l : m.plan.lights) any_shadows |= l.shadows != ir::Light::Shadows::None;
   CodeWriter w;
   w.line("// ---- one ray segment: march, then shade the hit or the background ----");
-  w.line(fmt::format("vec3 sdfc_segment(TIME_PARAM vec3 ro, vec3 rd, mask active, real pixel_angle, real jitter,{}",
-                     fx.glow.enabled ? " real glow_weight," : ""));
+  const bool cones = camera_cones(m);
+  w.line(fmt::format("vec3 sdfc_segment(TIME_PARAM vec3 ro, vec3 rd, mask active, real pixel_angle, real jitter,{}{}",
+                     fx.glow.enabled ? " real glow_weight," : "", cones ? " const os_cone cone," : ""));
   const bool refl_out = blended && fx.reflections.depth > 0;
   w.line(fmt::format("                  real* t_out, mask* hit_out, vec3* n_out, real* mat_out, real* steps_out{})",
                      refl_out ? ", real* refl_out" : ""));
@@ -75,6 +77,11 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
     used.insert("march_sphere_trace_closest");
     w.line("real closest;");
     w.line(fmt::format("mask hit = march_sphere_trace_closest(TIME_ARG ro, rd, t0, t1, active, pixel_angle, {}, {}, {}, &t, &steps, &closest);",
+                       lit.real(s.hit_epsilon), lit.real(s.step_factor), s.max_steps));
+  } else if (cones) {
+    used.insert("march_sphere_trace_cone");
+    w.line("// camera rays count only the object sets' items in their packet's cone (os_cone)");
+    w.line(fmt::format("mask hit = march_sphere_trace_cone(TIME_ARG ro, rd, t0, t1, active, pixel_angle, {}, {}, {}, &t, &steps, cone);",
                        lit.real(s.hit_epsilon), lit.real(s.step_factor), s.max_steps));
   } else {
     used.insert("march_sphere_trace");
@@ -170,8 +177,9 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
 // The colour seen along one camera ray: the primary segment and, with
 // effects.reflections, a bounded loop of mirror bounces weighted by
 // Fresnel-Schlick (no recursion in OpenCL C).
-std::string radiance_function(const ir::Module& m, std::set<std::string>& used) {
+std::string radiance_function(const ir::Module& m, const Literals& lit, std::set<std::string>& used) {
   const bool blended = m.analyses.material_blend;
+  const bool cones = camera_cones(m);
   const int depth = m.plan.effects.reflections.depth;
   const bool glow = m.plan.effects.glow.enabled;
   CodeWriter w;
@@ -185,8 +193,13 @@ std::string radiance_function(const ir::Module& m, std::set<std::string>& used) 
   const bool refl = blended && depth > 0;
   if (refl) w.line("real refl;");
   std::string refl_arg = refl ? ", &refl" : "";
-  w.line(fmt::format("vec3 color = sdfc_segment(TIME_ARG ro, rd, M_TRUE, pixel_angle, jitter,{} &t, &hit, normal, mat, steps{});",
-                     glow ? " 1.0f," : "", refl_arg));
+  if (cones) {
+    used.insert("os_camera_cone");
+    w.line("// the camera rays' cone: every lane's ray leaves the pinhole, and the hit band around it");
+    w.line(fmt::format("const os_cone cone = os_camera_cone(ro, rd, pixel_angle * {});", lit.real(m.plan.march.hit_epsilon)));
+  }
+  w.line(fmt::format("vec3 color = sdfc_segment(TIME_ARG ro, rd, M_TRUE, pixel_angle, jitter,{}{} &t, &hit, normal, mat, steps{});",
+                     glow ? " 1.0f," : "", cones ? " cone," : "", refl_arg));
   w.line("*depth = SEL((real)(-1.0f), t, hit);  // -1 marks a miss");
   if (depth > 0) {
     used.insert("fresnel_schlick");
@@ -210,8 +223,8 @@ std::string radiance_function(const ir::Module& m, std::set<std::string>& used) 
     w.line("ro = v3_mad(p, n, 2.0f * footprint);");
     w.line("rd = v3_normalize(v3_mad(rd, n, -2.0f * v3_dot(rd, n)));");
     w.line("real s;");
-    w.line(fmt::format("seg = sdfc_segment(TIME_ARG ro, rd, alive, pixel_angle, (real)(0.0f),{} &t, &hit, &n, &id, &s{});",
-                       glow ? " 0.0f," : "", refl_arg));
+    w.line(fmt::format("seg = sdfc_segment(TIME_ARG ro, rd, alive, pixel_angle, (real)(0.0f),{}{} &t, &hit, &n, &id, &s{});",
+                       glow ? " 0.0f," : "", cones ? " os_cone_none()," : "", refl_arg));
     w.line("alive = alive & hit;");
     w.close("}");
     w.line("color = v3_add(sum, v3_mul(weight, seg));  // the last segment counts in full");

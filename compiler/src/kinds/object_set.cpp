@@ -49,8 +49,8 @@ Carried walk(Walker& w, const ir::Node& n, const std::string& p) {
   w.line(fmt::format("real {};  // object set: {} items, {} primitives, {} hierarchy nodes as data{}", mat, v.items(),
                      v.prims(), v.nodes(), w.where(n)));
   const std::string bound = w.cull_bound.empty() ? w.lit().typed(1e30) : w.cull_bound;
-  w.line(fmt::format("real {} = {}({}, scene_data + {}, {}, {}, {}, {}, &{});", d, w.call("os_union"), p, v.offset(),
-                     v.nodes(), v.items(), bound, w.live_lanes, mat));
+  w.line(fmt::format("real {} = {}({}, scene_data + {}, {}, {}, {}, {}, {}, &{});", d, w.call("os_union"), p,
+                     v.offset(), v.nodes(), v.items(), bound, w.live_lanes, w.cone, mat));
   if (w.tracks_trap()) return {d, w.lit().typed(0)};  // no fractal inside: no trap
   if (!w.carries_records()) return {d, w.tracks_material() ? mat : ""};
   std::string id = w.var("m");  // items without a material of their own show the one above the set

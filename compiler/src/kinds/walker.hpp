@@ -68,6 +68,10 @@ class Walker {
   // box for them). Elsewhere every lane counts: M_TRUE.
   std::string live_lanes = "M_TRUE";
 
+  // In the camera rays' march: the packet's cone (os_cone), outside which an
+  // object set's items cannot matter to those rays. Elsewhere none.
+  std::string cone = "os_cone_none()";
+
   // Parameter i of n: a literal or its animated expression; param3: a vec3 from i.
   std::string param(const ir::Node& n, size_t i) const { return codegen::detail::param(n, i, lit()); }
   std::string param3(const ir::Node& n, size_t i) const { return codegen::detail::param3(n, i, lit()); }
