@@ -63,14 +63,25 @@ inline bool os_in_cone(const os_cone c, __global const float* b)
     return os_ball_in_cone(c, b[0] + hx, b[1] + hy, b[2] + hz, sqrt(hx * hx + hy * hy + hz * hz));
 }
 
-// Whether an item of one sphere or box may reach into the cone (a smooth
-// group is left to its leaf's box, which holds the blend's reach).
+// The radius of a sphere or box record's bounding ball about its centre.
+inline scalar os_prim_radius(__global const float* r)
+{
+    return r[0] == 0.0f ? (scalar)r[4] : sqrt((scalar)(r[4] * r[4] + r[5] * r[5] + r[6] * r[6]));
+}
+
+// Whether an item may reach into the cone: some primitive's ball, grown by
+// how far the item's smooth blend reaches below its primitives' minimum
+// (a quarter of its radius; 0 for one primitive), may.
 inline bool os_item_in_cone(const os_cone c, __global const float* item, __global const float* prims)
 {
-    if (!c.on || item[1] != 1.0f) return true;
+    if (!c.on) return true;
     __global const float* r = prims + 8 * (int)item[0];
-    const scalar radius = r[0] == 0.0f ? (scalar)r[4] : sqrt((scalar)(r[4] * r[4] + r[5] * r[5] + r[6] * r[6]));
-    return os_ball_in_cone(c, r[1], r[2], r[3], radius);
+    const int count = (int)item[1];
+    if (count == 1) return os_ball_in_cone(c, r[1], r[2], r[3], os_prim_radius(r));
+    const scalar reach = 0.25f * item[2];
+    for (int k = 0; k < count; ++k, r += 8)
+        if (os_ball_in_cone(c, r[1], r[2], r[3], os_prim_radius(r) + reach)) return true;
+    return false;
 }
 
 //! fn os_union
