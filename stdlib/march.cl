@@ -86,6 +86,48 @@ inline vec3 normal_central(TIME_PARAM vec3 p, real h)
     return v3_normalize(v3(dx, dy, dz));
 }
 
+//! fn normal_tap_bound
+//! deps: vec3_ops
+//! class: helper
+// Where the scene's distance is 1-Lipschitz and is d at p, a normal's tap
+// `reach` away from p is at most d + reach (plus rounding's slack): the
+// bound scene_dist_below lets an object set's walk cull by, so it skips
+// every box farther than that. The taps' values are the same, found in
+// fewer boxes (see bounded_normals in the compiler).
+inline real normal_tap_bound(vec3 p, real d, real reach)
+{
+    return d + reach * K(1.001f) + K(1e-5f) * (K(1.0f) + v3_max_comp(v3_abs(p)));
+}
+
+//! fn normal_tetrahedral_below
+//! deps: vec3_ops, normal_tap_bound
+//! after-scene
+//! class: helper
+// normal_tetrahedral with its taps (sqrt(3) h away) bounded by normal_tap_bound.
+inline vec3 normal_tetrahedral_below(TIME_PARAM vec3 p, real h, real d)
+{
+    const real ub = normal_tap_bound(p, d, K(1.7320508f) * h);
+    real a = scene_dist_below(TIME_ARG v3(p.x + h, p.y - h, p.z - h), ub);
+    real b = scene_dist_below(TIME_ARG v3(p.x - h, p.y - h, p.z + h), ub);
+    real c = scene_dist_below(TIME_ARG v3(p.x - h, p.y + h, p.z - h), ub);
+    real e = scene_dist_below(TIME_ARG v3(p.x + h, p.y + h, p.z + h), ub);
+    return v3_normalize(v3(a - b - c + e, -a - b + c + e, -a + b - c + e));
+}
+
+//! fn normal_central_below
+//! deps: vec3_ops, normal_tap_bound
+//! after-scene
+//! class: helper
+// normal_central with its taps (h away) bounded by normal_tap_bound.
+inline vec3 normal_central_below(TIME_PARAM vec3 p, real h, real d)
+{
+    const real ub = normal_tap_bound(p, d, h);
+    real dx = scene_dist_below(TIME_ARG v3(p.x + h, p.y, p.z), ub) - scene_dist_below(TIME_ARG v3(p.x - h, p.y, p.z), ub);
+    real dy = scene_dist_below(TIME_ARG v3(p.x, p.y + h, p.z), ub) - scene_dist_below(TIME_ARG v3(p.x, p.y - h, p.z), ub);
+    real dz = scene_dist_below(TIME_ARG v3(p.x, p.y, p.z + h), ub) - scene_dist_below(TIME_ARG v3(p.x, p.y, p.z - h), ub);
+    return v3_normalize(v3(dx, dy, dz));
+}
+
 //! fn ray_box_exit
 //! deps: vec3_ops, ray_box
 //! class: helper

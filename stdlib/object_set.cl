@@ -29,19 +29,30 @@ inline real os_item(vec3 p, __global const float* item, __global const float* pr
 // those items. The steps are longer than the whole set's distance allows,
 // but still safe: a step stays inside the ray's ball free of the items in
 // the cone, and inside the cone, which holds none of the others.
+struct os_list;
 typedef struct
 {
     scalar ox, oy, oz;    // apex: the camera
     scalar ax, ay, az;    // unit axis
     scalar cos_a, sin_a;  // half-angle, margin included
+    scalar margin;        // the margin: twice the hit band's angle
     int on;               // 0: no cone (every other ray): the whole set counts
+    struct os_list* list; // the set's items in the cone (os_list), or 0: walk the hierarchy
 } os_cone;
 
 inline os_cone os_cone_none(void)
 {
-    os_cone c = {0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0};
+    os_cone c = {0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 0, 0};
     return c;
 }
+
+#if SDFC_WIDTH == 1
+#define OS_LANES_MIN(x) (x)
+#define OS_LANES_MAX(x) (x)
+#else
+#define OS_LANES_MIN(x) __builtin_reduce_min(x)
+#define OS_LANES_MAX(x) __builtin_reduce_max(x)
+#endif
 
 // Whether the ball of radius r about (x, y, z) may reach into the cone.
 // perp cos a - along sin a is at most 0 inside the cone and changes no
@@ -85,7 +96,7 @@ inline bool os_item_in_cone(const os_cone c, __global const float* item, __globa
 }
 
 //! fn os_union
-//! deps: vec3_ops, os_item, os_cone
+//! deps: vec3_ops, os_item, os_cone, os_union_list
 //! class: bound
 // The nearest item of an object set, and its material: a walk of the
 // bounding-volume hierarchy that skips a node while every lane's nearest
@@ -130,6 +141,7 @@ inline real os_union(vec3 p, __global const float* s, const int n_nodes, const i
 {
     __global const float* items = s + 8 * n_nodes;
     __global const float* prims = items + 4 * n_items;
+    if (cone.list != 0 && cone.list->n >= 0) return os_union_list(p, items, prims, bound, live, cone, mat);
     real best = bound, m = (real)(0.0f);
     int stack[OS_STACK];
     real box[OS_STACK];
@@ -183,14 +195,6 @@ inline real os_union(vec3 p, __global const float* s, const int n_nodes, const i
 //! fn os_camera_cone
 //! deps: os_cone
 //! class: helper
-#if SDFC_WIDTH == 1
-#define OS_LANES_MIN(x) (x)
-#define OS_LANES_MAX(x) (x)
-#else
-#define OS_LANES_MIN(x) __builtin_reduce_min(x)
-#define OS_LANES_MAX(x) __builtin_reduce_max(x)
-#endif
-
 // The cone of the rays from ro (one point for every lane: a pinhole camera)
 // along the unit directions rd, widened by twice `band` radians (the hit
 // band's angle: hit epsilon times the pixel angle), so rounding cannot
@@ -213,7 +217,9 @@ inline os_cone os_camera_cone(vec3 ro, vec3 rd, real band)
     const scalar cos_m = cos(m), sin_m = sin(m);
     c.cos_a = cos_t * cos_m - sin_t * sin_m;
     c.sin_a = sin_t * cos_m + cos_t * sin_m;
+    c.margin = m;
     c.on = len > 0.0f && c.cos_a > 0.2f;
+    c.list = 0;
     return c;
 }
 

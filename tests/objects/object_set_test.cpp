@@ -9,6 +9,7 @@
 #include <cmath>
 #include <random>
 #include <regex>
+#include <sstream>
 
 #include "sdfc/codegen/emit_opencl.hpp"
 #include "sdfc/compile.hpp"
@@ -18,49 +19,18 @@
 #include "sdfc/reference/evaluator.hpp"
 #include "sdfc/scene_caps.hpp"
 #include "sdfc/source/yaml_loader.hpp"
+#include "object_set_scenes.hpp"
 #include "sdfc_test_support.hpp"
 #include "sdfrt/renderer.hpp"
 
 namespace sdfc {
 namespace {
 
+using test::kHead;
+using test::scene;
 using test::V3;
 namespace os = ir::object_set;
 constexpr size_t kThreshold = os::kLargeGroupSetMinPrims;  // this many scattered shapes are a set by either rule
-
-const char* kHead =
-    "camera: {position: [0, -9, 5], target: [0, 0, 1], up: [0, 0, 1], fov: 50}\n"
-    "render: {width: 96, height: 64}\n"
-    "lights:\n  - directional: {direction: [-0.4, 0.6, -0.7]}\n  - ambient: {intensity: 0.3}\n"
-    "materials:\n  a: {color: [0.9, 0.2, 0.1]}\n  b: {color: [0.1, 0.3, 0.9], reflectivity: 0.3}\n"
-    "  c: {color: [0.2, 0.8, 0.2]}\n"
-    "scene:\n  union:\n";
-
-// n scattered spheres and boxes (materials a, b, c in turn), optionally
-// smooth unions of `group` of them, and `extra` lines of other children.
-std::string scene(size_t n, size_t group = 1, const std::string& extra = "", double spread = 4, unsigned seed = 7) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(-spread, spread), r(0.15, 0.4);
-  std::string s = kHead + extra;
-  const char* mats[] = {"a", "b", "c"};
-  auto shape = [&](const std::string& indent, V3 c) {
-    std::string out = (rng() % 2) ? fmt::format("{}- sphere: {{radius: {:.3f}}}\n", indent, r(rng))
-                                  : fmt::format("{}- box: {{size: [{:.3f}, {:.3f}, {:.3f}]}}\n", indent, 2 * r(rng),
-                                                2 * r(rng), 2 * r(rng));
-    return out + fmt::format("{}  translate: [{:.3f}, {:.3f}, {:.3f}]\n", indent, c[0], c[1], c[2]);
-  };
-  for (size_t i = 0; i < n / group; ++i) {
-    V3 c{u(rng), u(rng), 1 + 0.5 * u(rng)};
-    if (group == 1) {
-      s += shape("    ", c) + fmt::format("      material: {}\n", mats[i % 3]);
-      continue;
-    }
-    s += "    - smooth_union:\n        radius: 0.3\n        children:\n";
-    for (size_t k = 0; k < group; ++k) s += shape("          ", {c[0] + 0.3 * k, c[1], c[2] + 0.2 * k});
-    s += fmt::format("      material: {}\n", mats[i % 3]);
-  }
-  return s;
-}
 
 // The scene as code: every pass but gather_object_sets.
 ir::Module unrolled(const std::string& yaml) {
@@ -137,14 +107,28 @@ struct Case {
   std::string name;
   std::string yaml;
   double spread;
+  bool seen_whole = true;  // the set sees the world's points: the camera's cone, bounded normals
 };
+
+// The set turned and moved as one: it sees other points than the camera's
+// rays, so it is walked whole (a cone in the rays' frame would cull the
+// items it must measure, and the rays would pass through them).
+std::string turned(const std::string& yaml) {
+  const std::string head = "scene:\n  union:\n";
+  const size_t at = yaml.find(head) + head.size();
+  std::string out = yaml.substr(0, at) + "    - union:\n";
+  std::istringstream body(yaml.substr(at));
+  for (std::string line; std::getline(body, line);) out += "    " + line + "\n";
+  return out + "      rotate: [0, 0, 30]\n      translate: [0.5, 0, 0]\n";
+}
 
 std::vector<Case> cases() {
   return {{"flat", scene(300), 5},
           {"groups", scene(400, 4), 5},
           {"with_floor", scene(200, 1, "    - plane: {normal: [0, 0, 1], offset: -0.5}\n      material: c\n"), 5},
           {"coincident", scene(100, 1, "", 0.0), 1},
-          {"far_apart", scene(100, 1, "", 2000), 2000}};
+          {"far_apart", scene(100, 1, "", 2000), 2000},
+          {"turned", turned(scene(200)), 6, false}};
 }
 
 TEST(ObjectSetReference, EvaluatesTheUnionItReplaces) {
@@ -191,20 +175,28 @@ sdfrt::FloatImage render(const ir::Module& m, const codegen::EmitOptions& opt = 
   return r.render(codegen::frame_params(m.plan, w, h, 0.0), w, h);
 }
 
+// Without cones the set renders the unrolled union's image bit for bit,
+// though its normals' taps cull the walk by the hit's distance
+// (normal_tetrahedral_below) and the unrolled union's evaluate everything.
 TEST(ObjectSetRender, SameImageAsTheUnrolledUnion) {
   for (const Case& c : cases()) {
     SCOPED_TRACE(c.name);
     ir::Module set = test::compile_text(c.yaml), code = unrolled(c.yaml);
-    codegen::EmitOptions opt{16};
-    opt.aovs = true;  // the material plane too
-    sdfrt::FloatImage a = render(set, opt, false), b = render(code, opt);
-    ASSERT_EQ(a.data.size(), b.data.size());
-    size_t differ = 0, hits = 0;
-    for (size_t i = 0; i < a.data.size(); ++i) differ += a.data[i] != b.data[i];
-    for (float v : a.plane(a.plane_index("hit"))) hits += v > 0;
-    EXPECT_EQ(differ, 0u);
-    if (c.name != "far_apart") {
-      EXPECT_GT(hits, 0u);  // the objects are in view
+    for (int width : {1, 16, 64}) {
+      SCOPED_TRACE(width);
+      codegen::EmitOptions opt{width};
+      opt.aovs = true;  // the material and normal planes too
+      ASSERT_EQ(codegen::emit_opencl(set, opt).source.find("normal_tetrahedral_below(TIME_ARG pos") != std::string::npos,
+                c.seen_whole);
+      sdfrt::FloatImage a = render(set, opt, false), b = render(code, opt);
+      ASSERT_EQ(a.data.size(), b.data.size());
+      size_t differ = 0, hits = 0;
+      for (size_t i = 0; i < a.data.size(); ++i) differ += a.data[i] != b.data[i];
+      for (float v : a.plane(a.plane_index("hit"))) hits += v > 0;
+      EXPECT_EQ(differ, 0u);
+      if (c.name != "far_apart") {
+        EXPECT_GT(hits, 0u);  // the objects are in view
+      }
     }
   }
 }
@@ -214,7 +206,9 @@ TEST(ObjectSetRender, SameImageAsTheUnrolledUnion) {
 // march hits (the march without cones, which renders the unrolled union's
 // image above): the two hit masks differ only on silhouettes (a pixel whose
 // neighbour's hit differs without cones), never inside an object, at every
-// packet width (one lane: the thinnest cone).
+// packet width (one lane: the thinnest cone). The march measures the cone's
+// items from a list (os_list) where it holds them all, and walks the
+// hierarchy where not ("coincident": all 100 items in every cone).
 TEST(ObjectSetRender, CameraConesHitWhatTheWholeUnionHits) {
   for (const Case& c : cases()) {
     SCOPED_TRACE(c.name);
@@ -223,7 +217,9 @@ TEST(ObjectSetRender, CameraConesHitWhatTheWholeUnionHits) {
       SCOPED_TRACE(width);
       codegen::EmitOptions opt{width};
       opt.aovs = true;
-      ASSERT_NE(codegen::emit_opencl(set, opt).source.find("= os_camera_cone("), std::string::npos);
+      const std::string k = codegen::emit_opencl(set, opt).source;
+      ASSERT_EQ(k.find("= os_camera_cone(") != std::string::npos, c.seen_whole);
+      ASSERT_EQ(k.find("os_list_gather(&list, cone, ") != std::string::npos, c.seen_whole);
       sdfrt::FloatImage a = render(set, opt), b = render(set, opt, false);
       auto ha = a.plane(a.plane_index("hit")), hb = b.plane(b.plane_index("hit"));
       const int w = a.width, h = a.height;
@@ -244,50 +240,6 @@ TEST(ObjectSetRender, CameraConesHitWhatTheWholeUnionHits) {
       EXPECT_LT(silhouette, size_t(w * h) / 100);
     }
   }
-}
-
-// Only camera rays through a pinhole whose march feeds nothing but the hit
-// get a cone: depth of field moves the rays' origins; glow, occlusion from
-// the step count and bisection read the march itself; the path integrator
-// has its own.
-TEST(ObjectSetKernel, CameraConesOnlyWhereTheMarchFeedsOnlyTheHit) {
-  auto cones = [](const std::vector<std::string>& sets) {
-    return codegen::emit_opencl(test::compile_text(scene(100), "test.yaml", sets), {16}).source.find("= os_camera_cone(") !=
-           std::string::npos;
-  };
-  EXPECT_TRUE(cones({}));
-  EXPECT_TRUE(cones({"effects.ambient_occlusion.method=normal_samples"}));
-  EXPECT_FALSE(cones({"camera.aperture=0.1"}));
-  EXPECT_FALSE(cones({"effects.glow.strength=1"}));
-  EXPECT_FALSE(cones({"effects.ambient_occlusion.method=step_count"}));
-  EXPECT_FALSE(cones({"render.refine=bisection"}));
-  EXPECT_FALSE(cones({"render.integrator=path"}));
-}
-
-TEST(ObjectSetKernel, SourceSizeDoesNotGrowWithTheCount) {
-  size_t small = codegen::emit_opencl(test::compile_text(scene(100)), {16}).source.size();
-  codegen::EmittedKernel big = codegen::emit_opencl(test::compile_text(scene(5000)), {16});
-  EXPECT_LT(big.source.size(), small + 200);  // a few digits more in the comment and the call
-  EXPECT_GT(big.scene_data.size(), 5000u * ir::object_set::kPrimFloats);
-}
-
-// In the marching loops a stopped lane's value is thrown away, so the walk
-// is given the loop's mask of lanes still marching; every other scene
-// function (normals, materials) needs every lane's value.
-TEST(ObjectSetKernel, OnlyTheMarchingDistanceMasksTheWalk) {
-  const std::string k = codegen::emit_opencl(test::compile_text(scene(100)), {16}).source;
-  auto body = [&](const std::string& signature) {
-    size_t at = k.find(signature);
-    EXPECT_NE(at, std::string::npos) << signature;
-    return at == std::string::npos ? std::string() : k.substr(at, k.find("\n}\n", at) - at);
-  };
-  const std::string marching = body("real scene_dist_cone(TIME_PARAM vec3 p, mask live, const os_cone cone)");
-  EXPECT_NE(marching.find("os_union("), std::string::npos);
-  EXPECT_NE(marching.find(", live, cone, &"), std::string::npos);
-  EXPECT_NE(k.find("{ return scene_dist_cone(TIME_ARG p, live, os_cone_none()); }"), std::string::npos);
-  const std::string with_material = body("real scene_dist_mat(TIME_PARAM vec3 p, real* mat)");
-  EXPECT_NE(with_material.find(", M_TRUE, os_cone_none(), &"), std::string::npos);
-  EXPECT_NE(k.find("return scene_dist_inline(TIME_ARG p, M_TRUE);"), std::string::npos);
 }
 
 }  // namespace

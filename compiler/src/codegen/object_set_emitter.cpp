@@ -34,12 +34,63 @@ bool has_object_sets(const ir::Module& m) {
   return false;
 }
 
+bool passes_cone(ir::Kind k) {
+  return k == ir::Kind::Union || k == ir::Kind::Bounded || k == ir::Kind::Material || k == ir::Kind::ObjectSet;
+}
+
+namespace {
+// Whether some object set is reached from the root through nodes that pass the cone on.
+bool cone_reaches_a_set(const ir::Graph& g, ir::NodeId id) {
+  const ir::Node& n = g.node(id);
+  if (n.kind == ir::Kind::ObjectSet) return true;
+  if (!passes_cone(n.kind)) return false;
+  return std::any_of(n.children.begin(), n.children.end(), [&](ir::NodeId c) { return cone_reaches_a_set(g, c); });
+}
+}  // namespace
+
 bool camera_cones(const ir::Module& m) {
   const ir::Effects& fx = m.plan.effects;
-  return has_object_sets(m) && m.plan.transport.integrator == ir::Transport::Integrator::Direct &&
+  return has_object_sets(m) && cone_reaches_a_set(*m.graph, m.root) && m.plan.transport.integrator == ir::Transport::Integrator::Direct &&
          m.plan.camera.aperture == 0 &&
          m.plan.march.refine != ir::MarchSettings::Refine::Bisection && !fx.glow.enabled &&
          !(fx.ambient_occlusion.enabled && fx.ambient_occlusion.method == ir::AmbientOcclusion::Method::StepCount);
+}
+
+ir::NodeId top_of_scene(const ir::Module& m) {
+  const ir::Node& root = m.graph->node(m.root);
+  return root.kind == ir::Kind::Bounded && !root.props.corrected ? root.children[0] : m.root;
+}
+
+bool bounded_normals(const ir::Module& m) {
+  if (m.root == ir::kNoNode) return false;
+  const ir::Graph& g = *m.graph;
+  const ir::Node& root = g.node(top_of_scene(m));
+  if (root.props.corrected) return false;
+  auto plain_set = [&](ir::NodeId id) {  // spheres, boxes and polynomial blends: 1-Lipschitz
+    const ir::Node& n = g.node(id);
+    return n.kind == ir::Kind::ObjectSet && !n.props.corrected;
+  };
+  auto exact = [&](ir::NodeId id) {  // a Euclidean distance all through: 1-Lipschitz
+    for (ir::NodeId k : g.postorder(id))
+      if (g.node(k).props.cls != ir::DistanceClass::Exact || g.node(k).props.corrected) return false;
+    return true;
+  };
+  if (plain_set(top_of_scene(m))) return true;
+  if (root.kind != ir::Kind::Union || root.children.size() < 2 || !plain_set(root.children.back())) return false;
+  return std::all_of(root.children.begin(), root.children.end() - 1, exact);
+}
+
+std::string camera_list_gather(const ir::Module& m) {
+  if (!camera_cones(m)) return "";
+  const ir::Node* set = nullptr;
+  for (ir::NodeId id : m.graph->postorder(m.root)) {
+    const ir::Node& n = m.graph->node(id);
+    if (n.kind != ir::Kind::ObjectSet) continue;
+    if (set) return "";  // one list per cone: the march would read it for every set
+    set = &n;
+  }
+  const os::View v{set->params};
+  return fmt::format("os_list_gather(&list, cone, scene_data + {}, {}, {});", v.offset(), v.nodes(), v.items());
 }
 
 std::string scene_data_macros(bool animated, int unlocked) {

@@ -16,11 +16,36 @@ std::vector<float> scene_data(const ir::Module& m);
 bool has_object_sets(const ir::Module& m);
 
 // Whether the camera rays march in their packet's cone (os_cone in the
-// stdlib): a scene with object sets seen through a pinhole by the direct
-// integrator, whose march feeds nothing but the hit (no glow, no occlusion
-// from the step count, no bisection). Their steps change with the cone; the
-// hits do not.
+// stdlib): a scene with an object set that sees the world's points (below
+// the root through unions, bounding boxes and materials alone, passes_cone),
+// seen through a pinhole by the direct integrator, whose march feeds
+// nothing but the hit (no glow, no occlusion from the step count, no
+// bisection). Their steps change with the cone; the hits do not.
 bool camera_cones(const ir::Module& m);
+// Whether a node hands the cone on to its children: it neither moves the
+// point (a transform, a domain operation) nor blends or cuts its children's
+// surfaces, so the items outside the cone stay out of the rays' way. A set
+// below any other node is walked whole.
+bool passes_cone(ir::Kind k);
+
+// With camera cones and a single object set, its items in each packet's
+// cone are listed once (os_list_gather) and the camera march measures them
+// from the list (os_union_list): the call that gathers them, or empty.
+std::string camera_list_gather(const ir::Module& m);
+
+// Whether the normals' taps bound the scene's distance from above
+// (scene_dist_below, normal_*_below in the stdlib): the top of the scene is
+// an object set, or a union of one (its last child) with exact shapes, so
+// the distance is 1-Lipschitz (no fractal estimate, nothing divided by L).
+// A tap lies within |e| of the hit, so the scene is at most d(hit) + |e|
+// there, and the walk opens only the boxes that near: the same value, from
+// a few boxes. A bounding box around the scene (a `bounded` root) keeps
+// this where it matters: near a hit, inside the box's margin, the distance
+// is the scene's; a miss's normal is thrown away.
+bool bounded_normals(const ir::Module& m);
+// The scene below a bounding box at the root, else the root: the node that
+// sees scene_dist_below's bound.
+ir::NodeId top_of_scene(const ir::Module& m);
 
 // The prelude's addition: scene functions take the buffer after the time.
 std::string scene_data_macros(bool animated, int unlocked);

@@ -12,14 +12,16 @@ namespace {
 // `signature { <the walk at p> <epilogue(value)> }`
 // `live`: the mask parameter of the lanes still marching, if the function has one.
 // `cone`: the camera rays' cone parameter, if the function has one.
+// `above`: the parameter bounding the scene's distance from above, if any.
 template <class Epilogue>
 std::string function(const ir::Module& m, const Literals& lit, std::set<std::string>& used, Carry carry,
                      const std::string& signature, Epilogue epilogue, const std::string& live = "",
-                     const std::string& cone = "") {
+                     const std::string& cone = "", const std::string& above = "") {
   CodeWriter w;
   SceneWalker walker(m, lit, used, w, carry);
   if (!live.empty()) walker.live_lanes = live;
   if (!cone.empty()) walker.cone = cone;
+  walker.above = above;
   w.line(signature);
   w.open("{");
   kinds::Carried v = walker.emit(m.root, "p");
@@ -82,7 +84,14 @@ std::string emit_scene_functions(const ir::Module& m, const Literals& lit, std::
                     "live");
   }
   out += "\n// ---- scene distance, called: every use outside the marching loops ----\n";
-  out += "__attribute__((noinline)) real scene_dist(TIME_PARAM vec3 p) { return scene_dist_inline(TIME_ARG p, M_TRUE); }\n";
+  if (bounded_normals(m)) {  // normals' taps know an upper bound: the object set's walk culls by it too
+    out += function(m, lit, used, Carry::Distance,
+                    "__attribute__((noinline)) real scene_dist_below(TIME_PARAM vec3 p, real above)",
+                    [](CodeWriter& w, const kinds::Carried& v) { w.line("return " + v.d + ";"); }, "", "", "above");
+    out += "inline real scene_dist(TIME_PARAM vec3 p) { return scene_dist_below(TIME_ARG p, K(1e30f)); }\n";
+  } else {
+    out += "__attribute__((noinline)) real scene_dist(TIME_PARAM vec3 p) { return scene_dist_inline(TIME_ARG p, M_TRUE); }\n";
+  }
   out += "\n// ---- scene distance with material: evaluated once per hit ----\n";
   out += function(m, lit, used, Carry::Material, "real scene_dist_mat(TIME_PARAM vec3 p, real* mat)",
                   [](CodeWriter& w, const kinds::Carried& v) {

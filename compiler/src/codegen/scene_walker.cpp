@@ -9,6 +9,7 @@
 #include "fractal_emitter.hpp"
 #include "kernel_text.hpp"
 #include "kind_call.hpp"
+#include "object_set_emitter.hpp"
 #include "trap_shape_emitter.hpp"
 #include "sdfc/expr/expr.hpp"
 #include "sdfc/kinds/params.hpp"
@@ -64,7 +65,12 @@ std::string SceneWalker::describe(const ir::Node& n) const {
 }
 
 Value SceneWalker::emit(NodeId id, const std::string& p) {
+  const bool top = id == m_.root || id == top_of_scene(m_);  // the bound passes a bounding box at the root
+  const std::string above = top ? this->above : std::exchange(this->above, "");
+  const std::string cone = passes_cone(g_.node(id).kind) ? this->cone : std::exchange(this->cone, "os_cone_none()");
   Value v = emit_node(id, p);
+  this->above = above;
+  this->cone = cone;
   const ir::Node& n = g_.node(id);
   if (!n.props.corrected) return v;
   const ir::Box3& r = n.props.lipschitz_region;

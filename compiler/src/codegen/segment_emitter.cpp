@@ -101,15 +101,31 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
   else
     w.line(fmt::format("real h = fmax(pixel_angle * t * {}, K({}));  // render.normal_step: {} pixel footprints",
                        lit.real(s.normal_step), lit.real(s.normal_step_floor), s.normal_step));
+  // With an object set the material comes first: its distance at the hit
+  // bounds the normals' taps, so their walks open only the nearby boxes.
+  const bool below = s.normals != ir::NormalMethod::Dual && !blended && bounded_normals(m);
   if (s.normals == ir::NormalMethod::Dual) {
     w.line("n = scene_normal_dual(pos);  // exact gradient by forward-mode differentiation");
+  } else if (below) {
+    const char* normal_fn = s.normals == ir::NormalMethod::Central ? "normal_central_below" : "normal_tetrahedral_below";
+    used.insert(normal_fn);
+    if (const auto& uni = m.analyses.uniform_material) {
+      w.line(fmt::format("real id = {};  // the scene's one material", lit.typed(*uni)));
+      w.line("const real d_hit = scene_dist(TIME_ARG pos);");
+    } else {
+      w.line("real id;");
+      w.line("const real d_hit = scene_dist_mat(TIME_ARG pos, &id);");
+    }
+    w.line(fmt::format("n = {}(TIME_ARG pos, h, d_hit);  // the taps are at most d_hit + their reach", normal_fn));
   } else {
     const char* normal_fn = s.normals == ir::NormalMethod::Central ? "normal_central" : "normal_tetrahedral";
     used.insert(normal_fn);
     w.line(fmt::format("n = {}(TIME_ARG pos, h);", normal_fn));
   }
   std::string extra;
-  if (blended) {
+  if (below) {
+    // the material came with d_hit
+  } else if (blended) {
     w.line("real id;");
     w.line("mat_record look;  // the materials mixed across smooth blends");
     w.line(m.analyses.coloring_geometry ? "id = scene_material(TIME_ARG pos, n, &look);" : "id = scene_material(TIME_ARG pos, &look);");
@@ -167,7 +183,8 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
       w.line(fmt::format("color = fog_exponential(color, {}, fog_t, {});", lit.vec3(f.color), detail::animated(f.density_anim, f.density, lit)));
     }
   }
-  w.line(fmt::format("*t_out = t; *hit_out = hit; *n_out = n; *mat_out = mat; *steps_out = steps;{}",
+  // a miss's normal is 0 (the normal AOV); the lanes that missed in a packet with hits computed one
+  w.line(fmt::format("*t_out = t; *hit_out = hit; *n_out = v3_select(v3_splat(0.0f), n, hit); *mat_out = mat; *steps_out = steps;{}",
                      refl_out ? " *refl_out = refl;" : ""));
   w.line("return color;");
   w.close("}");
@@ -196,7 +213,15 @@ std::string radiance_function(const ir::Module& m, const Literals& lit, std::set
   if (cones) {
     used.insert("os_camera_cone");
     w.line("// the camera rays' cone: every lane's ray leaves the pinhole, and the hit band around it");
-    w.line(fmt::format("const os_cone cone = os_camera_cone(ro, rd, pixel_angle * {});", lit.real(m.plan.march.hit_epsilon)));
+    const std::string gather = camera_list_gather(m);
+    w.line(fmt::format("{}os_cone cone = os_camera_cone(ro, rd, pixel_angle * {});", gather.empty() ? "const " : "",
+                       lit.real(m.plan.march.hit_epsilon)));
+    if (!gather.empty()) {
+      used.insert("os_list");
+      w.line("os_list list;  // the object set's items in the cone, in order along it: the camera march measures these");
+      w.line(gather);
+      w.line("cone.list = &list;");
+    }
   }
   w.line(fmt::format("vec3 color = sdfc_segment(TIME_ARG ro, rd, M_TRUE, pixel_angle, jitter,{}{} &t, &hit, normal, mat, steps{});",
                      glow ? " 1.0f," : "", cones ? " cone," : "", refl_arg));

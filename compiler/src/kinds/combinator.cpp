@@ -115,7 +115,7 @@ Carried combine(Walker& w, const ir::Node& n, const std::string& p, const Fold& 
   };
   for (size_t i = 1; i < kids.size(); ++i) fold_in(kids[i]);
   if (cull) {
-    w.cull_bound = d;
+    w.cull_bound = w.above.empty() ? d : fmt::format("fmin({}, {})", d, w.above);
     Carried set = w.child(n.children.back(), p);
     w.cull_bound.clear();
     fold_in(set);

@@ -48,7 +48,7 @@ Carried walk(Walker& w, const ir::Node& n, const std::string& p) {
   std::string d = w.var("d"), mat = w.var("m");
   w.line(fmt::format("real {};  // object set: {} items, {} primitives, {} hierarchy nodes as data{}", mat, v.items(),
                      v.prims(), v.nodes(), w.where(n)));
-  const std::string bound = w.cull_bound.empty() ? w.lit().typed(1e30) : w.cull_bound;
+  const std::string bound = !w.cull_bound.empty() ? w.cull_bound : !w.above.empty() ? w.above : w.lit().typed(1e30);
   w.line(fmt::format("real {} = {}({}, scene_data + {}, {}, {}, {}, {}, {}, &{});", d, w.call("os_union"), p,
                      v.offset(), v.nodes(), v.items(), bound, w.live_lanes, w.cone, mat));
   if (w.tracks_trap()) return {d, w.lit().typed(0)};  // no fractal inside: no trap

@@ -63,6 +63,11 @@ class Walker {
   // set's walk culls by it. Empty: no bound.
   std::string cull_bound;
 
+  // In scene_dist: an upper bound of the scene's distance at p (empty:
+  // none), seen by the root alone. A root union whose last child is an
+  // object set culls that set's walk by it too (see bounded_normals).
+  std::string above;
+
   // In the marching loops' distance: the mask of the lanes still marching
   // (the others' values are thrown away, so an object set's walk opens no
   // box for them). Elsewhere every lane counts: M_TRUE.

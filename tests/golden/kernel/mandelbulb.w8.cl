@@ -100,7 +100,7 @@ vec3 sdfc_segment(TIME_PARAM vec3 ro, vec3 rd, mask active, real pixel_angle, re
         vec3 lit = shade_surface(TIME_ARG pos, n, v3_scale(rd, -1.0f), id, trap, occlusion, h, hit);
         color = v3_select(color, lit, hit);
     }
-    *t_out = t; *hit_out = hit; *n_out = n; *mat_out = mat; *steps_out = steps;
+    *t_out = t; *hit_out = hit; *n_out = v3_select(v3_splat(0.0f), n, hit); *mat_out = mat; *steps_out = steps;
     return color;
 }
 
