@@ -63,7 +63,7 @@ inline void os_list_gather(os_list* l, const os_cone c, __global const float* s,
             __global const float* item = items + 4 * i;
             if (!os_item_in_cone(c, item, prims)) continue;
             __global const float* r = prims + 8 * (int)item[0];
-            const scalar reach = (int)item[1] == 1 ? 0.0f : 0.25f * item[2];
+            const scalar reach = os_item_reach(item);
             scalar lo = 1e30f, hi = -1e30f;
             for (int k = 0; k < (int)item[1]; ++k, r += 8) {
                 const scalar along = (r[1] - c.ox) * c.ax + (r[2] - c.oy) * c.ay + (r[3] - c.oz) * c.az;

@@ -80,16 +80,23 @@ inline scalar os_prim_radius(__global const float* r)
     return r[0] == 0.0f ? (scalar)r[4] : sqrt((scalar)(r[4] * r[4] + r[5] * r[5] + r[6] * r[6]));
 }
 
+// How far an item's smooth blend reaches below its primitives' minimum: a
+// quarter of its radius, 0 for one primitive. Its primitives' balls grown
+// by this hold its surface and hit band.
+inline scalar os_item_reach(__global const float* item)
+{
+    return (int)item[1] == 1 ? 0.0f : 0.25f * item[2];
+}
+
 // Whether an item may reach into the cone: some primitive's ball, grown by
-// how far the item's smooth blend reaches below its primitives' minimum
-// (a quarter of its radius; 0 for one primitive), may.
+// the item's reach (os_item_reach), may.
 inline bool os_item_in_cone(const os_cone c, __global const float* item, __global const float* prims)
 {
     if (!c.on) return true;
     __global const float* r = prims + 8 * (int)item[0];
     const int count = (int)item[1];
     if (count == 1) return os_ball_in_cone(c, r[1], r[2], r[3], os_prim_radius(r));
-    const scalar reach = 0.25f * item[2];
+    const scalar reach = os_item_reach(item);
     for (int k = 0; k < count; ++k, r += 8)
         if (os_ball_in_cone(c, r[1], r[2], r[3], os_prim_radius(r) + reach)) return true;
     return false;
