@@ -100,31 +100,34 @@ inline real normal_tap_bound(vec3 p, real d, real reach)
 }
 
 //! fn normal_tetrahedral_below
-//! deps: vec3_ops, normal_tap_bound
+//! deps: vec3_ops, normal_tap_bound, os_cone
 //! after-scene
 //! class: helper
 // normal_tetrahedral with its taps (sqrt(3) h away) bounded by normal_tap_bound.
-inline vec3 normal_tetrahedral_below(TIME_PARAM vec3 p, real h, real d)
+// Only the `live` lanes' normals are used (the hits); `cone` is the packet's
+// (os_cone_shading), whose list answers most taps, or none.
+inline vec3 normal_tetrahedral_below(TIME_PARAM vec3 p, real h, real d, mask live, const os_cone cone)
 {
     const real ub = normal_tap_bound(p, d, K(1.7320508f) * h);
-    real a = scene_dist_below(TIME_ARG v3(p.x + h, p.y - h, p.z - h), ub);
-    real b = scene_dist_below(TIME_ARG v3(p.x - h, p.y - h, p.z + h), ub);
-    real c = scene_dist_below(TIME_ARG v3(p.x - h, p.y + h, p.z - h), ub);
-    real e = scene_dist_below(TIME_ARG v3(p.x + h, p.y + h, p.z + h), ub);
+    real a = scene_dist_below(TIME_ARG v3(p.x + h, p.y - h, p.z - h), ub, live, cone);
+    real b = scene_dist_below(TIME_ARG v3(p.x - h, p.y - h, p.z + h), ub, live, cone);
+    real c = scene_dist_below(TIME_ARG v3(p.x - h, p.y + h, p.z - h), ub, live, cone);
+    real e = scene_dist_below(TIME_ARG v3(p.x + h, p.y + h, p.z + h), ub, live, cone);
     return v3_normalize(v3(a - b - c + e, -a - b + c + e, -a + b - c + e));
 }
 
 //! fn normal_central_below
-//! deps: vec3_ops, normal_tap_bound
+//! deps: vec3_ops, normal_tap_bound, os_cone
 //! after-scene
 //! class: helper
-// normal_central with its taps (h away) bounded by normal_tap_bound.
-inline vec3 normal_central_below(TIME_PARAM vec3 p, real h, real d)
+// normal_central with its taps (h away) bounded by normal_tap_bound; `live`
+// and `cone` as for normal_tetrahedral_below.
+inline vec3 normal_central_below(TIME_PARAM vec3 p, real h, real d, mask live, const os_cone cone)
 {
     const real ub = normal_tap_bound(p, d, h);
-    real dx = scene_dist_below(TIME_ARG v3(p.x + h, p.y, p.z), ub) - scene_dist_below(TIME_ARG v3(p.x - h, p.y, p.z), ub);
-    real dy = scene_dist_below(TIME_ARG v3(p.x, p.y + h, p.z), ub) - scene_dist_below(TIME_ARG v3(p.x, p.y - h, p.z), ub);
-    real dz = scene_dist_below(TIME_ARG v3(p.x, p.y, p.z + h), ub) - scene_dist_below(TIME_ARG v3(p.x, p.y, p.z - h), ub);
+    real dx = scene_dist_below(TIME_ARG v3(p.x + h, p.y, p.z), ub, live, cone) - scene_dist_below(TIME_ARG v3(p.x - h, p.y, p.z), ub, live, cone);
+    real dy = scene_dist_below(TIME_ARG v3(p.x, p.y + h, p.z), ub, live, cone) - scene_dist_below(TIME_ARG v3(p.x, p.y - h, p.z), ub, live, cone);
+    real dz = scene_dist_below(TIME_ARG v3(p.x, p.y, p.z + h), ub, live, cone) - scene_dist_below(TIME_ARG v3(p.x, p.y, p.z - h), ub, live, cone);
     return v3_normalize(v3(dx, dy, dz));
 }
 

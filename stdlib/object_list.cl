@@ -6,7 +6,10 @@
 // (os_list_gather), so that each step of the camera march measures only the
 // items some live lane may still reach (os_union_list) instead of walking
 // the hierarchy. A scene with one object set only: the list is that set's.
-// A cone holding more items than OS_LIST_CAP keeps the walk (n = -1).
+// The list also holds the items of a wider cone (cos_w), which the hits'
+// material and normal taps read (os_union_shade): they lie beside the rays.
+// A camera cone holding more items than OS_LIST_CAP keeps the walk (n = -1);
+// the wider cone's other items make way for them.
 #if SDFC_WIDTH == 1
 #define OS_LIST_CAP 16
 #else
@@ -17,51 +20,78 @@ typedef struct os_list
 {
     int n;                                    // items held; -1: too many, walk the hierarchy
     int first;                                // the first not yet behind every live lane
+    scalar cos_c, sin_c;                      // the cone whose every item is listed: the wider, or the camera's
     int item[OS_LIST_CAP];                    // the item's index in the set
     scalar lo[OS_LIST_CAP], hi[OS_LIST_CAP];  // where its balls begin and end along the axis
+    uchar in_camera[OS_LIST_CAP];             // in the camera rays' cone: the march measures it
 } os_list;
 
-// Inserts item i, spanning [lo, hi] along the axis, in order of lo.
-inline bool os_list_add(os_list* l, int i, scalar lo, scalar hi)
+// Inserts item i, spanning [lo, hi] along the axis, in order of lo. In a
+// full list an item of the camera's cone (`in_camera`) takes the place of the
+// last that is only in the wider cone; then, or when that is all the new
+// item is, the list holds the camera's cone whole, no longer the wider one.
+// False when the camera's cone holds more than the list can.
+inline bool os_list_add(os_list* l, const os_cone c, int i, scalar lo, scalar hi, bool in_camera)
 {
-    if (l->n == OS_LIST_CAP) return false;
+    if (l->n == OS_LIST_CAP) {
+        l->cos_c = c.cos_a;
+        l->sin_c = c.sin_a;
+        if (!in_camera) return true;
+        int k = l->n - 1;
+        while (k >= 0 && l->in_camera[k]) --k;
+        if (k < 0) return false;
+        for (--l->n; k < l->n; ++k) {
+            l->item[k] = l->item[k + 1];
+            l->lo[k] = l->lo[k + 1];
+            l->hi[k] = l->hi[k + 1];
+            l->in_camera[k] = l->in_camera[k + 1];
+        }
+    }
     int k = l->n++;
     for (; k > 0 && l->lo[k - 1] > lo; --k) {
         l->item[k] = l->item[k - 1];
         l->lo[k] = l->lo[k - 1];
         l->hi[k] = l->hi[k - 1];
+        l->in_camera[k] = l->in_camera[k - 1];
     }
     l->item[k] = i;
     l->lo[k] = lo;
     l->hi[k] = hi;
+    l->in_camera[k] = in_camera;
     return true;
 }
 
 // Every item of the set (nodes and items as os_union reads them) that
-// reaches into the cone, with the span of its balls (os_item_in_cone's:
-// each shape's, grown by a quarter of the blend radius) along the axis.
+// reaches into the wider cone, with the span of its balls (os_item_within's:
+// each shape's, grown by a quarter of the blend radius) along the axis, and
+// whether it reaches into the camera rays' cone as the camera march's walk
+// sees it (os_union: it and every box above it do), so that the march
+// measures the same items from the list as from the walk.
 inline void os_list_gather(os_list* l, const os_cone c, __global const float* s, const int n_nodes, const int n_items)
 {
     __global const float* items = s + 8 * n_nodes;
     __global const float* prims = items + 4 * n_items;
     l->n = c.on ? 0 : -1;
     l->first = 0;
-    int stack[OS_LIST_STACK];
+    l->cos_c = c.cos_w;
+    l->sin_c = c.sin_w;
+    int stack[OS_LIST_STACK];  // 2 node + 1 where the boxes above it reach into the camera rays' cone
     int top = 0;
-    if (c.on) stack[top++] = 0;
+    if (c.on) stack[top++] = 1;
     while (top > 0) {
-        const int node = stack[--top];
+        const int node = stack[top - 1] >> 1;
         __global const float* b = s + 8 * node;
-        if (!os_in_cone(c, b)) continue;
+        const bool seen = (stack[--top] & 1) && os_in_cone(c, b);
+        if (!seen && !os_box_within(c, c.cos_w, c.sin_w, b)) continue;
         const int first = (int)b[6], count = (int)b[7];
         if (count == 0) {
-            stack[top++] = first;
-            stack[top++] = node + 1;
+            stack[top++] = 2 * first + seen;
+            stack[top++] = 2 * (node + 1) + seen;
             continue;
         }
         for (int i = first; i < first + count; ++i) {
             __global const float* item = items + 4 * i;
-            if (!os_item_in_cone(c, item, prims)) continue;
+            if (!os_item_within(c, c.cos_w, c.sin_w, item, prims)) continue;
             __global const float* r = prims + 8 * (int)item[0];
             const scalar reach = os_item_reach(item);
             scalar lo = 1e30f, hi = -1e30f;
@@ -71,7 +101,7 @@ inline void os_list_gather(os_list* l, const os_cone c, __global const float* s,
                 lo = fmin(lo, along - radius);
                 hi = fmax(hi, along + radius);
             }
-            if (!os_list_add(l, i, lo, hi)) {
+            if (!os_list_add(l, c, i, lo, hi, seen && os_item_in_cone(c, item, prims))) {
                 l->n = -1;
                 return;
             }
@@ -102,7 +132,7 @@ inline real os_union_list(vec3 p, __global const float* items, __global const fl
     real best = bound, m = (real)(0.0f);
     for (int k = l->first; k < l->n; ++k) {
         if (l->lo[k] - farthest > OS_LANES_MAX(SEL(K(-1e30f), best, live))) break;
-        if (l->hi[k] < behind) continue;
+        if (!l->in_camera[k] || l->hi[k] < behind) continue;
         const int i = l->item[k];
         const real d = os_item(p, items + 4 * i, prims);
         m = SEL(m, (real)items[4 * i + 3], d < best);
@@ -110,4 +140,58 @@ inline real os_union_list(vec3 p, __global const float* items, __global const fl
     }
     *mat = m;
     return best;
+}
+
+//! fn os_union_shade
+//! deps: os_list
+//! class: bound
+// os_union at the hits, from the packet's list (os_cone_shading): the
+// nearest of all listed items, the ones the march dropped too, and its
+// material. Every item the list leaves out lies outside its cone, so it is
+// farther from p than p is deep inside that cone (the cone's perp cos a -
+// along sin a changes no faster than the point moves). Where the nearest
+// listed item (or `bound`) is no farther than that for every live lane,
+// it is the nearest of the whole set: the walk's value, from a few items.
+// Elsewhere (a lane near the cone's side, a tap far from its hit) false,
+// and os_union walks the hierarchy.
+inline bool os_union_shade(vec3 p, __global const float* items, __global const float* prims, const real bound,
+                           const mask live, const os_cone c, real* d_out, real* mat)
+{
+    const os_list* l = c.list;
+    const vec3 v = v3(p.x - c.ox, p.y - c.oy, p.z - c.oz);
+    const real along = v.x * c.ax + v.y * c.ay + v.z * c.az;
+    const vec3 w = v3(v.x - along * c.ax, v.y - along * c.ay, v.z - along * c.az);
+    // less a rounding slack: the gather's cone test rounds too
+    const real depth = along * l->sin_c - sqrt(v3_dot(w, w)) * l->cos_c - K(1e-5f) * (K(1.0f) + fabs(along));
+    const scalar nearest = OS_LANES_MIN(SEL(K(1e30f), along, live)), farthest = OS_LANES_MAX(SEL(K(-1e30f), along, live));
+    real best = bound, m = (real)(0.0f);
+    for (int k = 0; k < l->n; ++k) {
+        const scalar worst = OS_LANES_MAX(SEL(K(-1e30f), best, live));
+        if (l->lo[k] - farthest > worst) break;
+        if (nearest - l->hi[k] > worst) continue;
+        const int i = l->item[k];
+        const real d = os_item(p, items + 4 * i, prims);
+        m = SEL(m, (real)items[4 * i + 3], d < best);
+        best = fmin(best, d);
+    }
+    if (M_ANY(live & (best > depth))) return false;
+    *d_out = best;
+    *mat = m;
+    return true;
+}
+
+//! fn os_cone_shading
+//! deps: os_cone
+//! class: helper
+// The cone that shades a packet's hits: the camera cone's list, read by
+// os_union_shade, and no culling by the camera's cone where the list
+// cannot answer (os_union then walks the whole set). A list of the camera's
+// cone alone (os_camera_cone did not widen it) would rarely answer for the
+// taps beside the packet's edge: there the hits walk the set.
+inline os_cone os_cone_shading(os_cone c)
+{
+    if (c.cos_w == c.cos_a) c.list = 0;
+    c.on = 0;
+    c.shade = 1;
+    return c;
 }

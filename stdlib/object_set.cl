@@ -36,13 +36,15 @@ typedef struct
     scalar ax, ay, az;    // unit axis
     scalar cos_a, sin_a;  // half-angle, margin included
     scalar margin;        // the margin: twice the hit band's angle
+    scalar cos_w, sin_w;  // the list's cone (os_list): wider by the reach of the hits' shading
     int on;               // 0: no cone (every other ray): the whole set counts
+    int shade;            // 1: shading the hits from the list (os_union_shade), else the camera march
     struct os_list* list; // the set's items in the cone (os_list), or 0: walk the hierarchy
 } os_cone;
 
 inline os_cone os_cone_none(void)
 {
-    os_cone c = {0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 0, 0};
+    os_cone c = {0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0, 0, 0};
     return c;
 }
 
@@ -54,24 +56,32 @@ inline os_cone os_cone_none(void)
 #define OS_LANES_MAX(x) __builtin_reduce_max(x)
 #endif
 
-// Whether the ball of radius r about (x, y, z) may reach into the cone.
-// perp cos a - along sin a is at most 0 inside the cone and changes no
-// faster than the point moves, so where it exceeds r at the centre, the
-// whole ball is outside.
-inline bool os_ball_in_cone(const os_cone c, scalar x, scalar y, scalar z, scalar r)
+// Whether the ball of radius r about (x, y, z) may reach into the cone of
+// half-angle a about the cone's axis (the camera rays' cone: cos_a, sin_a;
+// or the list's: cos_w, sin_w). perp cos a - along sin a is at most 0 inside
+// the cone and changes no faster than the point moves, so where it exceeds
+// r at the centre, the whole ball is outside.
+inline bool os_ball_within(const os_cone c, scalar cos_a, scalar sin_a, scalar x, scalar y, scalar z, scalar r)
 {
     const scalar vx = x - c.ox, vy = y - c.oy, vz = z - c.oz;
     const scalar along = vx * c.ax + vy * c.ay + vz * c.az;
     const scalar wx = vx - along * c.ax, wy = vy - along * c.ay, wz = vz - along * c.az;
-    return sqrt(wx * wx + wy * wy + wz * wz) * c.cos_a - along * c.sin_a <= r;
+    return sqrt(wx * wx + wy * wy + wz * wz) * cos_a - along * sin_a <= r;
+}
+inline bool os_ball_in_cone(const os_cone c, scalar x, scalar y, scalar z, scalar r)
+{
+    return os_ball_within(c, c.cos_a, c.sin_a, x, y, z, r);
 }
 
 // Whether the box (lo xyz, hi xyz) may reach into the cone: its ball may.
+inline bool os_box_within(const os_cone c, scalar cos_a, scalar sin_a, __global const float* b)
+{
+    const scalar hx = 0.5f * (b[3] - b[0]), hy = 0.5f * (b[4] - b[1]), hz = 0.5f * (b[5] - b[2]);
+    return os_ball_within(c, cos_a, sin_a, b[0] + hx, b[1] + hy, b[2] + hz, sqrt(hx * hx + hy * hy + hz * hz));
+}
 inline bool os_in_cone(const os_cone c, __global const float* b)
 {
-    if (!c.on) return true;
-    const scalar hx = 0.5f * (b[3] - b[0]), hy = 0.5f * (b[4] - b[1]), hz = 0.5f * (b[5] - b[2]);
-    return os_ball_in_cone(c, b[0] + hx, b[1] + hy, b[2] + hz, sqrt(hx * hx + hy * hy + hz * hz));
+    return !c.on || os_box_within(c, c.cos_a, c.sin_a, b);
 }
 
 // The radius of a sphere or box record's bounding ball about its centre.
@@ -90,20 +100,24 @@ inline scalar os_item_reach(__global const float* item)
 
 // Whether an item may reach into the cone: some primitive's ball, grown by
 // the item's reach (os_item_reach), may.
-inline bool os_item_in_cone(const os_cone c, __global const float* item, __global const float* prims)
+inline bool os_item_within(const os_cone c, scalar cos_a, scalar sin_a, __global const float* item,
+                           __global const float* prims)
 {
-    if (!c.on) return true;
     __global const float* r = prims + 8 * (int)item[0];
     const int count = (int)item[1];
-    if (count == 1) return os_ball_in_cone(c, r[1], r[2], r[3], os_prim_radius(r));
+    if (count == 1) return os_ball_within(c, cos_a, sin_a, r[1], r[2], r[3], os_prim_radius(r));
     const scalar reach = os_item_reach(item);
     for (int k = 0; k < count; ++k, r += 8)
-        if (os_ball_in_cone(c, r[1], r[2], r[3], os_prim_radius(r) + reach)) return true;
+        if (os_ball_within(c, cos_a, sin_a, r[1], r[2], r[3], os_prim_radius(r) + reach)) return true;
     return false;
+}
+inline bool os_item_in_cone(const os_cone c, __global const float* item, __global const float* prims)
+{
+    return !c.on || os_item_within(c, c.cos_a, c.sin_a, item, prims);
 }
 
 //! fn os_union
-//! deps: vec3_ops, os_item, os_cone, os_union_list
+//! deps: vec3_ops, os_item, os_cone, os_union_list, os_union_shade
 //! class: bound
 // The nearest item of an object set, and its material: a walk of the
 // bounding-volume hierarchy that skips a node while every lane's nearest
@@ -148,7 +162,11 @@ inline real os_union(vec3 p, __global const float* s, const int n_nodes, const i
 {
     __global const float* items = s + 8 * n_nodes;
     __global const float* prims = items + 4 * n_items;
-    if (cone.list != 0 && cone.list->n >= 0) return os_union_list(p, items, prims, bound, live, cone, mat);
+    if (cone.list != 0 && cone.list->n >= 0) {
+        if (!cone.shade) return os_union_list(p, items, prims, bound, live, cone, mat);
+        real d;
+        if (os_union_shade(p, items, prims, bound, live, cone, &d, mat)) return d;
+    }
     real best = bound, m = (real)(0.0f);
     int stack[OS_STACK];
     real box[OS_STACK];
@@ -206,7 +224,11 @@ inline real os_union(vec3 p, __global const float* s, const int n_nodes, const i
 // along the unit directions rd, widened by twice `band` radians (the hit
 // band's angle: hit epsilon times the pixel angle), so rounding cannot
 // shave the band. A cone wider than about 78 degrees would cull little: none.
-inline os_cone os_camera_cone(vec3 ro, vec3 rd, real band)
+// The list's cone (os_list) is wider by twice `reach` radians: the angle of
+// the farthest normal tap from its hit, so that the hits are shaded from
+// the list (os_union_shade) even at the packet's edge. Not widened, the
+// list does not shade (os_cone_shading).
+inline os_cone os_camera_cone(vec3 ro, vec3 rd, real band, real reach)
 {
     os_cone c;
     c.ox = OS_LANES_MIN(ro.x);
@@ -226,6 +248,13 @@ inline os_cone os_camera_cone(vec3 ro, vec3 rd, real band)
     c.sin_a = sin_t * cos_m + cos_t * sin_m;
     c.margin = m;
     c.on = len > 0.0f && c.cos_a > 0.2f;
+    // Widened only where that less than doubles the rays' own angle: around
+    // one lane's pixel the taps' reach would list several times the items.
+    const scalar w = 2.0f * OS_LANES_MAX(reach), cos_r = cos(w), sin_r = sin(w);
+    c.cos_w = c.cos_a * cos_r - c.sin_a * sin_r;
+    c.sin_w = c.sin_a * cos_r + c.cos_a * sin_r;
+    if (w == 0.0f || w > sin_t || c.cos_w <= 0.2f) c.cos_w = c.cos_a, c.sin_w = c.sin_a;
+    c.shade = 0;
     c.list = 0;
     return c;
 }

@@ -43,9 +43,10 @@ TEST(ObjectSetKernel, SourceSizeDoesNotGrowWithTheCount) {
 }
 
 // In the marching loops a stopped lane's value is thrown away, so the walk
-// is given the loop's mask of lanes still marching; every other scene
-// function (normals, materials) needs every lane's value.
-TEST(ObjectSetKernel, OnlyTheMarchingDistanceMasksTheWalk) {
+// is given the loop's mask of lanes still marching; the hits' shading gives
+// it the hits (and the packet's list, os_cone_shading); every other use of
+// the scene's distance needs every lane's value.
+TEST(ObjectSetKernel, TheWalkOpensBoxesForTheLanesWhoseValuesAreUsed) {
   const std::string k = codegen::emit_opencl(test::compile_text(scene(100)), {16}).source;
   auto body = [&](const std::string& signature) {
     size_t at = k.find(signature);
@@ -56,12 +57,15 @@ TEST(ObjectSetKernel, OnlyTheMarchingDistanceMasksTheWalk) {
   EXPECT_NE(marching.find("os_union("), std::string::npos);
   EXPECT_NE(marching.find(", live, cone, &"), std::string::npos);
   EXPECT_NE(k.find("{ return scene_dist_cone(TIME_ARG p, live, os_cone_none()); }"), std::string::npos);
-  const std::string with_material = body("real scene_dist_mat(TIME_PARAM vec3 p, real* mat)");
-  EXPECT_NE(with_material.find(", M_TRUE, os_cone_none(), &"), std::string::npos);
-  const std::string called = body("real scene_dist_below(TIME_PARAM vec3 p, real above)");
-  EXPECT_NE(called.find(", above, M_TRUE, os_cone_none(), &"), std::string::npos);
+  const std::string with_material = body("real scene_dist_mat_hit(TIME_PARAM vec3 p, mask live, const os_cone cone, real* mat)");
+  EXPECT_NE(with_material.find(", live, cone, &"), std::string::npos);
+  EXPECT_NE(k.find("{ return scene_dist_mat_hit(TIME_ARG p, M_TRUE, os_cone_none(), mat); }"), std::string::npos);
+  const std::string called = body("real scene_dist_below(TIME_PARAM vec3 p, real above, mask live, const os_cone cone)");
+  EXPECT_NE(called.find(", above, live, cone, &"), std::string::npos);
+  EXPECT_NE(k.find("{ return scene_dist_below(TIME_ARG p, K(1e30f), M_TRUE, os_cone_none()); }"), std::string::npos);
+  EXPECT_NE(k.find("const os_cone shade = os_cone_shading(cone);"), std::string::npos);
+  EXPECT_NE(k.find("const real d_hit = scene_dist_mat_hit(TIME_ARG pos, hit, shade, &id);"), std::string::npos);
 }
-
 
 // The camera rays' cone reaches a set only through unions, bounding boxes
 // and materials (a set turned or moved as one sees other points than the
@@ -76,6 +80,7 @@ TEST(ObjectSetKernel, CameraListsWhereOneSetSeesTheWorld) {
   const std::string two = source(scene(100, 1, "    - union:\n" + moved + "      translate: [0, 0, 3]\n"));
   EXPECT_NE(two.find("= os_camera_cone("), std::string::npos);  // the first set sees the world
   EXPECT_EQ(two.find("os_list_gather(&list"), std::string::npos);
+  EXPECT_NE(two.find("os_camera_cone(ro, rd, pixel_angle * 0.5f, 0.0f);"), std::string::npos);  // no list to widen
   const std::string away = source(std::string(test::kHead) + "    - plane: {normal: [0, 0, 1], offset: 0}\n    - union:\n" + moved +
                                   "      translate: [0, 0, 3]\n");
   EXPECT_EQ(away.find("= os_camera_cone("), std::string::npos);
@@ -90,12 +95,18 @@ TEST(ObjectSetKernel, NormalsBoundTheirTapsOnlyWhereTheDistanceIsOneLipschitz) {
   auto source = [](const std::string& extra, const std::vector<std::string>& sets = {}) {
     return codegen::emit_opencl(test::compile_text(scene(100, 1, extra), "test.yaml", sets), {16}).source;
   };
-  auto bounded = [](const std::string& k) { return k.find("= normal_tetrahedral_below(TIME_ARG pos, h, d_hit);") != std::string::npos; };
+  auto bounded = [](const std::string& k) {
+    return k.find("= normal_tetrahedral_below(TIME_ARG pos, h, d_hit, hit, shade);") != std::string::npos;
+  };
   const std::string alone = source("");
   EXPECT_TRUE(bounded(alone));
-  EXPECT_NE(alone.find("const real d_hit = scene_dist_mat(TIME_ARG pos, &id);"), std::string::npos);
+  EXPECT_NE(alone.find("const real d_hit = scene_dist_mat_hit(TIME_ARG pos, hit, shade, &id);"), std::string::npos);
+  // the list's cone is wider by the farthest tap's angle: sqrt(3) h, or h for central normals
+  EXPECT_NE(alone.find("os_camera_cone(ro, rd, pixel_angle * 0.5f, pixel_angle * 0.8660254f);"), std::string::npos);
   EXPECT_TRUE(bounded(source("    - plane: {normal: [0, 0, 1], offset: -1}\n")));
-  EXPECT_NE(source("", {"render.normals=central"}).find("= normal_central_below(TIME_ARG pos, h, d_hit);"), std::string::npos);
+  const std::string central = source("", {"render.normals=central"});
+  EXPECT_NE(central.find("= normal_central_below(TIME_ARG pos, h, d_hit, hit, shade);"), std::string::npos);
+  EXPECT_NE(central.find("os_camera_cone(ro, rd, pixel_angle * 0.5f, pixel_angle * 0.5f);"), std::string::npos);
   EXPECT_FALSE(bounded(source("    - mandelbulb: {power: 8}\n      translate: [0, 0, 6]\n")));
   EXPECT_FALSE(bounded(source("    - torus: {major_radius: 1, minor_radius: 0.3}\n      twist: {rate: 2}\n")));
 }

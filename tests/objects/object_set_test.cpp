@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <functional>
 #include <random>
 #include <regex>
 #include <sstream>
@@ -167,9 +168,12 @@ TEST(ObjectSetConformance, KernelWalkAgreesWithReferenceAndUnrolledKernel) {
 
 // Camera rays march in their packet's cone (os_cone); `cones` false gives
 // them none, as every other ray, so the set's distance is the whole union's.
-sdfrt::FloatImage render(const ir::Module& m, const codegen::EmitOptions& opt = {16}, bool cones = true) {
+// `edit` changes the kernel's source first.
+sdfrt::FloatImage render(const ir::Module& m, const codegen::EmitOptions& opt = {16}, bool cones = true,
+                         const std::function<std::string(const std::string&)>& edit = {}) {
   codegen::EmittedKernel k = codegen::emit_opencl(m, opt);
   if (!cones) k.source = std::regex_replace(k.source, std::regex(R"(os_camera_cone\([^;]*\);)"), "os_cone_none();");
+  if (edit) k.source = edit(k.source);
   sdfrt::Renderer r(test::device(), {k.source, k.entry, k.simd_width, k.packet_rows, k.planes, "", k.scene_data});
   const int w = m.plan.march.width, h = m.plan.march.height;
   return r.render(codegen::frame_params(m.plan, w, h, 0.0), w, h);
@@ -240,6 +244,50 @@ TEST(ObjectSetRender, CameraConesHitWhatTheWholeUnionHits) {
       EXPECT_LT(silhouette, size_t(w * h) / 100);
     }
   }
+}
+
+// The hits' material and normal taps read the packet's list (os_union_shade)
+// where it holds every item that could be nearest, and walk the set
+// elsewhere: the same values as the walk's, bit for bit, at every width.
+// A list of the camera's cone alone, made to shade, answers less often
+// (none beside the packet's edges), still with the walk's values; without
+// its check it gives others.
+TEST(ObjectSetRender, HitsShadedFromTheListAsFromTheWalk) {
+  auto replace = [](std::string k, const std::string& from, const std::string& to) {
+    const size_t at = k.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return at == std::string::npos ? k : k.replace(at, from.size(), to);
+  };
+  auto walked = [&](const std::string& k) { return replace(k, "os_cone_shading(cone)", "os_cone_none()"); };
+  auto narrow = [&](const std::string& k) {
+    return replace(replace(k, "pixel_angle * 0.8660254f);", "0.0f);"), "if (c.cos_w == c.cos_a) c.list = 0;", "");
+  };
+  auto unchecked = [&](const std::string& k) {
+    return replace(narrow(k), "if (M_ANY(live & (best > depth))) return false;", "");
+  };
+  size_t differ_unchecked = 0;
+  for (const Case& c : cases()) {
+    if (!c.seen_whole) continue;
+    SCOPED_TRACE(c.name);
+    ir::Module set = test::compile_text(c.yaml);
+    for (int width : {1, 16, 64}) {
+      SCOPED_TRACE(width);
+      codegen::EmitOptions opt{width};
+      opt.aovs = true;
+      ASSERT_NE(codegen::emit_opencl(set, opt).source.find("= os_cone_shading(cone);"), std::string::npos);
+      sdfrt::FloatImage want = render(set, opt, true, walked);
+      for (const auto& edit : {std::function<std::string(const std::string&)>{}, std::function<std::string(const std::string&)>{narrow}}) {
+        sdfrt::FloatImage got = render(set, opt, true, edit);
+        ASSERT_EQ(got.data.size(), want.data.size());
+        size_t differ = 0;
+        for (size_t i = 0; i < got.data.size(); ++i) differ += got.data[i] != want.data[i];
+        EXPECT_EQ(differ, 0u);
+      }
+      sdfrt::FloatImage u = render(set, opt, true, unchecked);
+      for (size_t i = 0; i < u.data.size(); ++i) differ_unchecked += u.data[i] != want.data[i];
+    }
+  }
+  EXPECT_GT(differ_unchecked, 0u);
 }
 
 }  // namespace

@@ -80,6 +80,12 @@ bool bounded_normals(const ir::Module& m) {
   return std::all_of(root.children.begin(), root.children.end() - 1, exact);
 }
 
+bool bounded_shading(const ir::Module& m) {
+  return m.plan.march.normals != ir::NormalMethod::Dual && !m.analyses.material_blend && bounded_normals(m);
+}
+
+bool shading_from_list(const ir::Module& m) { return bounded_shading(m) && !camera_list_gather(m).empty(); }
+
 std::string camera_list_gather(const ir::Module& m) {
   if (!camera_cones(m)) return "";
   const ir::Node* set = nullptr;

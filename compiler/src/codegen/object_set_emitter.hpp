@@ -43,6 +43,13 @@ std::string camera_list_gather(const ir::Module& m);
 // this where it matters: near a hit, inside the box's margin, the distance
 // is the scene's; a miss's normal is thrown away.
 bool bounded_normals(const ir::Module& m);
+// Whether the segment shades its hits with bounded normals: bounded_normals,
+// with finite-difference normals and one material per point (no blends).
+bool bounded_shading(const ir::Module& m);
+// Whether, besides, the packet's list (camera_list_gather) answers the
+// hits' material and normal taps (os_union_shade): the list then holds a
+// cone wider by the farthest tap's angle.
+bool shading_from_list(const ir::Module& m);
 // The scene below a bounding box at the root, else the root: the node that
 // sees scene_dist_below's bound.
 ir::NodeId top_of_scene(const ir::Module& m);

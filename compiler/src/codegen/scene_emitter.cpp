@@ -84,20 +84,35 @@ std::string emit_scene_functions(const ir::Module& m, const Literals& lit, std::
                     "live");
   }
   out += "\n// ---- scene distance, called: every use outside the marching loops ----\n";
-  if (bounded_normals(m)) {  // normals' taps know an upper bound: the object set's walk culls by it too
+  // With bounded normals the hits' shading passes the lanes it uses (`live`, the hits)
+  // and the packet's cone, whose list answers for the set (os_cone_shading).
+  const bool below = bounded_normals(m);
+  if (below) {  // normals' taps know an upper bound: the object set's walk culls by it too
     out += function(m, lit, used, Carry::Distance,
-                    "__attribute__((noinline)) real scene_dist_below(TIME_PARAM vec3 p, real above)",
-                    [](CodeWriter& w, const kinds::Carried& v) { w.line("return " + v.d + ";"); }, "", "", "above");
-    out += "inline real scene_dist(TIME_PARAM vec3 p) { return scene_dist_below(TIME_ARG p, K(1e30f)); }\n";
+                    "__attribute__((noinline)) real scene_dist_below(TIME_PARAM vec3 p, real above, mask live, const os_cone cone)",
+                    [](CodeWriter& w, const kinds::Carried& v) {
+                      w.line("(void)live; (void)cone;");
+                      w.line("return " + v.d + ";");
+                    },
+                    "live", "cone", "above");
+    out += "inline real scene_dist(TIME_PARAM vec3 p) { return scene_dist_below(TIME_ARG p, K(1e30f), M_TRUE, os_cone_none()); }\n";
   } else {
     out += "__attribute__((noinline)) real scene_dist(TIME_PARAM vec3 p) { return scene_dist_inline(TIME_ARG p, M_TRUE); }\n";
   }
   out += "\n// ---- scene distance with material: evaluated once per hit ----\n";
-  out += function(m, lit, used, Carry::Material, "real scene_dist_mat(TIME_PARAM vec3 p, real* mat)",
-                  [](CodeWriter& w, const kinds::Carried& v) {
-                    w.line("*mat = " + v.mat + ";");
-                    w.line("return " + v.d + ";");
-                  });
+  auto with_material = [](CodeWriter& w, const kinds::Carried& v) {
+    w.line("*mat = " + v.mat + ";");
+    w.line("return " + v.d + ";");
+  };
+  if (below) {
+    out += function(m, lit, used, Carry::Material,
+                    "real scene_dist_mat_hit(TIME_PARAM vec3 p, mask live, const os_cone cone, real* mat)", with_material,
+                    "live", "cone");
+    out += "inline real scene_dist_mat(TIME_PARAM vec3 p, real* mat) "
+           "{ return scene_dist_mat_hit(TIME_ARG p, M_TRUE, os_cone_none(), mat); }\n";
+  } else {
+    out += function(m, lit, used, Carry::Material, "real scene_dist_mat(TIME_PARAM vec3 p, real* mat)", with_material);
+  }
   if (m.analyses.orbit_traps && !m.analyses.material_blend) {  // with blends, scene_material applies the traps
     out += "\n// ---- orbit trap of the nearest fractal: evaluated once per hit, for orbit-trap materials ----\n";
     out += function(m, lit, used, Carry::Trap, "real scene_trap(TIME_PARAM vec3 p)", return_carried);

@@ -3,6 +3,7 @@
 // of one camera ray with its reflection bounces.
 #include <fmt/format.h>
 
+#include <cmath>
 #include <set>
 
 #include "entry_emitters.hpp"
@@ -103,20 +104,27 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
                        lit.real(s.normal_step), lit.real(s.normal_step_floor), s.normal_step));
   // With an object set the material comes first: its distance at the hit
   // bounds the normals' taps, so their walks open only the nearby boxes.
-  const bool below = s.normals != ir::NormalMethod::Dual && !blended && bounded_normals(m);
+  // Only the hits' lanes open the set's boxes, and the packet's list answers for it where it can.
+  const bool below = bounded_shading(m);
   if (s.normals == ir::NormalMethod::Dual) {
     w.line("n = scene_normal_dual(pos);  // exact gradient by forward-mode differentiation");
   } else if (below) {
     const char* normal_fn = s.normals == ir::NormalMethod::Central ? "normal_central_below" : "normal_tetrahedral_below";
     used.insert(normal_fn);
+    if (shading_from_list(m)) {
+      used.insert("os_cone_shading");
+      w.line("const os_cone shade = os_cone_shading(cone);  // the set's items beside the rays, where the list holds them");
+    } else {
+      w.line("const os_cone shade = os_cone_none();");
+    }
     if (const auto& uni = m.analyses.uniform_material) {
       w.line(fmt::format("real id = {};  // the scene's one material", lit.typed(*uni)));
-      w.line("const real d_hit = scene_dist(TIME_ARG pos);");
+      w.line("const real d_hit = scene_dist_below(TIME_ARG pos, K(1e30f), hit, shade);");
     } else {
       w.line("real id;");
-      w.line("const real d_hit = scene_dist_mat(TIME_ARG pos, &id);");
+      w.line("const real d_hit = scene_dist_mat_hit(TIME_ARG pos, hit, shade, &id);");
     }
-    w.line(fmt::format("n = {}(TIME_ARG pos, h, d_hit);  // the taps are at most d_hit + their reach", normal_fn));
+    w.line(fmt::format("n = {}(TIME_ARG pos, h, d_hit, hit, shade);  // the taps are at most d_hit + their reach", normal_fn));
   } else {
     const char* normal_fn = s.normals == ir::NormalMethod::Central ? "normal_central" : "normal_tetrahedral";
     used.insert(normal_fn);
@@ -214,8 +222,11 @@ std::string radiance_function(const ir::Module& m, const Literals& lit, std::set
     used.insert("os_camera_cone");
     w.line("// the camera rays' cone: every lane's ray leaves the pinhole, and the hit band around it");
     const std::string gather = camera_list_gather(m);
-    w.line(fmt::format("{}os_cone cone = os_camera_cone(ro, rd, pixel_angle * {});", gather.empty() ? "const " : "",
-                       lit.real(m.plan.march.hit_epsilon)));
+    // the list's cone is wider by the farthest normal tap's angle (sqrt(3) h for the tetrahedral taps)
+    const double tap = m.plan.march.normal_step * (m.plan.march.normals == ir::NormalMethod::Central ? 1.0 : std::sqrt(3.0));
+    w.line(fmt::format("{}os_cone cone = os_camera_cone(ro, rd, pixel_angle * {}, {});", gather.empty() ? "const " : "",
+                       lit.real(m.plan.march.hit_epsilon),
+                       shading_from_list(m) ? "pixel_angle * " + lit.real(tap) : std::string("0.0f")));
     if (!gather.empty()) {
       used.insert("os_list");
       w.line("os_list list;  // the object set's items in the cone, in order along it: the camera march measures these");
