@@ -125,9 +125,12 @@ inline vec3 normal_tetrahedral_below(TIME_PARAM vec3 p, real h, real d, mask liv
 inline vec3 normal_central_below(TIME_PARAM vec3 p, real h, real d, mask live, const os_cone cone)
 {
     const real ub = normal_tap_bound(p, d, h);
-    real dx = scene_dist_below(TIME_ARG v3(p.x + h, p.y, p.z), ub, live, cone) - scene_dist_below(TIME_ARG v3(p.x - h, p.y, p.z), ub, live, cone);
-    real dy = scene_dist_below(TIME_ARG v3(p.x, p.y + h, p.z), ub, live, cone) - scene_dist_below(TIME_ARG v3(p.x, p.y - h, p.z), ub, live, cone);
-    real dz = scene_dist_below(TIME_ARG v3(p.x, p.y, p.z + h), ub, live, cone) - scene_dist_below(TIME_ARG v3(p.x, p.y, p.z - h), ub, live, cone);
+    real dx = scene_dist_below(TIME_ARG v3(p.x + h, p.y, p.z), ub, live, cone)
+              - scene_dist_below(TIME_ARG v3(p.x - h, p.y, p.z), ub, live, cone);
+    real dy = scene_dist_below(TIME_ARG v3(p.x, p.y + h, p.z), ub, live, cone)
+              - scene_dist_below(TIME_ARG v3(p.x, p.y - h, p.z), ub, live, cone);
+    real dz = scene_dist_below(TIME_ARG v3(p.x, p.y, p.z + h), ub, live, cone)
+              - scene_dist_below(TIME_ARG v3(p.x, p.y, p.z - h), ub, live, cone);
     return v3_normalize(v3(dx, dy, dz));
 }
 
