@@ -9,11 +9,13 @@
 // The list also holds the items of a wider cone (cos_w), which the hits'
 // material and normal taps read (os_union_shade): they lie beside the rays.
 // A camera cone holding more items than OS_LIST_CAP keeps the walk (n = -1);
-// the wider cone's other items make way for them.
+// the wider cone's other items make way for them. 96 holds the wider cone of
+// nearly every 8x8 packet in 10 000 scattered objects (64 left 6 % of them
+// short, whose hits then walked the set).
 #if SDFC_WIDTH == 1
 #define OS_LIST_CAP 16
 #else
-#define OS_LIST_CAP 64
+#define OS_LIST_CAP 96
 #endif
 #define OS_LIST_STACK 64
 typedef struct os_list
