@@ -64,7 +64,7 @@ inline bool os_list_add(os_list* l, const os_cone c, int i, scalar lo, scalar hi
 }
 
 // Every item of the set (nodes and items as os_union reads them) that
-// reaches into the wider cone, with the span of its balls (os_item_within's:
+// reaches into the wider cone, with the span of its balls (os_item_in_cone's:
 // each shape's, grown by a quarter of the blend radius) along the axis, and
 // whether it reaches into the camera rays' cone as the camera march's walk
 // sees it (os_union: it and every box above it do), so that the march
@@ -81,10 +81,15 @@ inline void os_list_gather(os_list* l, const os_cone c, __global const float* s,
     int top = 0;
     if (c.on) stack[top++] = 1;
     while (top > 0) {
+        // each ball is placed about the axis once, and tested against both cones (os_ball_within's terms)
         const int node = stack[top - 1] >> 1;
         __global const float* b = s + 8 * node;
-        const bool seen = (stack[--top] & 1) && os_in_cone(c, b);
-        if (!seen && !os_box_within(c, c.cos_w, c.sin_w, b)) continue;
+        const scalar hx = 0.5f * (b[3] - b[0]), hy = 0.5f * (b[4] - b[1]), hz = 0.5f * (b[5] - b[2]);
+        const scalar r = sqrt(hx * hx + hy * hy + hz * hz);
+        scalar along;
+        const scalar perp = os_axis_perp(c, b[0] + hx, b[1] + hy, b[2] + hz, &along);
+        const bool seen = (stack[--top] & 1) && perp * c.cos_a - along * c.sin_a <= r;
+        if (!seen && !(perp * c.cos_w - along * c.sin_w <= r)) continue;
         const int first = (int)b[6], count = (int)b[7];
         if (count == 0) {
             stack[top++] = 2 * first + seen;
@@ -93,17 +98,19 @@ inline void os_list_gather(os_list* l, const os_cone c, __global const float* s,
         }
         for (int i = first; i < first + count; ++i) {
             __global const float* item = items + 4 * i;
-            if (!os_item_within(c, c.cos_w, c.sin_w, item, prims)) continue;
-            __global const float* r = prims + 8 * (int)item[0];
+            __global const float* p = prims + 8 * (int)item[0];
             const scalar reach = os_item_reach(item);
             scalar lo = 1e30f, hi = -1e30f;
-            for (int k = 0; k < (int)item[1]; ++k, r += 8) {
-                const scalar along = (r[1] - c.ox) * c.ax + (r[2] - c.oy) * c.ay + (r[3] - c.oz) * c.az;
-                const scalar radius = os_prim_radius(r) + reach;
+            bool wide = false, camera = false;
+            for (int k = 0; k < (int)item[1]; ++k, p += 8) {
+                const scalar radius = os_prim_radius(p) + reach;
+                const scalar perp_k = os_axis_perp(c, p[1], p[2], p[3], &along);
+                wide = wide || perp_k * c.cos_w - along * c.sin_w <= radius;
+                camera = camera || perp_k * c.cos_a - along * c.sin_a <= radius;
                 lo = fmin(lo, along - radius);
                 hi = fmax(hi, along + radius);
             }
-            if (!os_list_add(l, c, i, lo, hi, seen && os_item_in_cone(c, item, prims))) {
+            if (wide && !os_list_add(l, c, i, lo, hi, seen && camera)) {
                 l->n = -1;
                 return;
             }

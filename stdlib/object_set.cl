@@ -56,32 +56,32 @@ inline os_cone os_cone_none(void)
 #define OS_LANES_MAX(x) __builtin_reduce_max(x)
 #endif
 
-// Whether the ball of radius r about (x, y, z) may reach into the cone of
-// half-angle a about the cone's axis (the camera rays' cone: cos_a, sin_a;
-// or the list's: cos_w, sin_w). perp cos a - along sin a is at most 0 inside
-// the cone and changes no faster than the point moves, so where it exceeds
-// r at the centre, the whole ball is outside.
-inline bool os_ball_within(const os_cone c, scalar cos_a, scalar sin_a, scalar x, scalar y, scalar z, scalar r)
+// How far the point (x, y, z) lies from the cone's axis, and `along` it.
+inline scalar os_axis_perp(const os_cone c, scalar x, scalar y, scalar z, scalar* along)
 {
     const scalar vx = x - c.ox, vy = y - c.oy, vz = z - c.oz;
-    const scalar along = vx * c.ax + vy * c.ay + vz * c.az;
-    const scalar wx = vx - along * c.ax, wy = vy - along * c.ay, wz = vz - along * c.az;
-    return sqrt(wx * wx + wy * wy + wz * wz) * cos_a - along * sin_a <= r;
+    *along = vx * c.ax + vy * c.ay + vz * c.az;
+    const scalar wx = vx - *along * c.ax, wy = vy - *along * c.ay, wz = vz - *along * c.az;
+    return sqrt(wx * wx + wy * wy + wz * wz);
 }
+
+// Whether the ball of radius r about (x, y, z) may reach into the camera
+// rays' cone (half-angle a). perp cos a - along sin a is at most 0 inside
+// the cone and changes no faster than the point moves, so where it exceeds
+// r at the centre, the whole ball is outside. (os_list_gather tests the
+// list's wider cone, cos_w and sin_w, the same way.)
 inline bool os_ball_in_cone(const os_cone c, scalar x, scalar y, scalar z, scalar r)
 {
-    return os_ball_within(c, c.cos_a, c.sin_a, x, y, z, r);
+    scalar along;
+    return os_axis_perp(c, x, y, z, &along) * c.cos_a - along * c.sin_a <= r;
 }
 
 // Whether the box (lo xyz, hi xyz) may reach into the cone: its ball may.
-inline bool os_box_within(const os_cone c, scalar cos_a, scalar sin_a, __global const float* b)
-{
-    const scalar hx = 0.5f * (b[3] - b[0]), hy = 0.5f * (b[4] - b[1]), hz = 0.5f * (b[5] - b[2]);
-    return os_ball_within(c, cos_a, sin_a, b[0] + hx, b[1] + hy, b[2] + hz, sqrt(hx * hx + hy * hy + hz * hz));
-}
 inline bool os_in_cone(const os_cone c, __global const float* b)
 {
-    return !c.on || os_box_within(c, c.cos_a, c.sin_a, b);
+    if (!c.on) return true;
+    const scalar hx = 0.5f * (b[3] - b[0]), hy = 0.5f * (b[4] - b[1]), hz = 0.5f * (b[5] - b[2]);
+    return os_ball_in_cone(c, b[0] + hx, b[1] + hy, b[2] + hz, sqrt(hx * hx + hy * hy + hz * hz));
 }
 
 // The radius of a sphere or box record's bounding ball about its centre.
@@ -100,20 +100,16 @@ inline scalar os_item_reach(__global const float* item)
 
 // Whether an item may reach into the cone: some primitive's ball, grown by
 // the item's reach (os_item_reach), may.
-inline bool os_item_within(const os_cone c, scalar cos_a, scalar sin_a, __global const float* item,
-                           __global const float* prims)
-{
-    __global const float* r = prims + 8 * (int)item[0];
-    const int count = (int)item[1];
-    if (count == 1) return os_ball_within(c, cos_a, sin_a, r[1], r[2], r[3], os_prim_radius(r));
-    const scalar reach = os_item_reach(item);
-    for (int k = 0; k < count; ++k, r += 8)
-        if (os_ball_within(c, cos_a, sin_a, r[1], r[2], r[3], os_prim_radius(r) + reach)) return true;
-    return false;
-}
 inline bool os_item_in_cone(const os_cone c, __global const float* item, __global const float* prims)
 {
-    return !c.on || os_item_within(c, c.cos_a, c.sin_a, item, prims);
+    if (!c.on) return true;
+    __global const float* r = prims + 8 * (int)item[0];
+    const int count = (int)item[1];
+    if (count == 1) return os_ball_in_cone(c, r[1], r[2], r[3], os_prim_radius(r));
+    const scalar reach = os_item_reach(item);
+    for (int k = 0; k < count; ++k, r += 8)
+        if (os_ball_in_cone(c, r[1], r[2], r[3], os_prim_radius(r) + reach)) return true;
+    return false;
 }
 
 //! fn os_union
