@@ -153,16 +153,11 @@ inline real os_box_sq(vec3 p, __global const float* b)
 #else
 #define OS_NEAREST(d, live) __builtin_reduce_min(__builtin_astype(SEL(K(1e30f), (d), (live)), mask))
 #endif
-inline real os_union(vec3 p, __global const float* s, const int n_nodes, const int n_items, const real bound,
-                     const mask live, const os_cone cone, real* mat)
+__attribute__((noinline)) real os_union_walk(vec3 p, __global const float* s, const int n_nodes, const int n_items,
+                                              const real bound, const mask live, const os_cone cone, real* mat)
 {
     __global const float* items = s + 8 * n_nodes;
     __global const float* prims = items + 4 * n_items;
-    if (cone.list != 0 && cone.list->n >= 0) {
-        if (!cone.shade) return os_union_list(p, items, prims, bound, live, cone, mat);
-        real d;
-        if (os_union_shade(p, items, prims, bound, live, cone, &d, mat)) return d;
-    }
     real best = bound, m = (real)(0.0f);
     int stack[OS_STACK];
     real box[OS_STACK];
@@ -211,6 +206,25 @@ inline real os_union(vec3 p, __global const float* s, const int n_nodes, const i
     }
     *mat = m;
     return best;
+}
+
+// The camera march reads the packet's list (os_union_list) and the hits'
+// shading reads it where it answers (os_union_shade); the rest walks. The
+// choice is inlined where the scene calls the set and the walk is not: a
+// walk inlined into the march made every step set up its stacks (flat
+// 10 000 at 64 lanes: 28 ms against 24.6).
+inline __attribute__((always_inline)) real os_union(vec3 p, __global const float* s, const int n_nodes,
+                                                    const int n_items, const real bound, const mask live,
+                                                    const os_cone cone, real* mat)
+{
+    if (cone.list != 0 && cone.list->n >= 0) {
+        __global const float* items = s + 8 * n_nodes;
+        __global const float* prims = items + 4 * n_items;
+        if (!cone.shade) return os_union_list(p, items, prims, bound, live, cone, mat);
+        real d;
+        if (os_union_shade(p, items, prims, bound, live, cone, &d, mat)) return d;
+    }
+    return os_union_walk(p, s, n_nodes, n_items, bound, live, cone, mat);
 }
 
 //! fn os_camera_cone
