@@ -65,7 +65,7 @@ inline bool os_list_add(os_list* l, const os_cone c, int i, scalar lo, scalar hi
 
 // Every item of the set (nodes and items as os_union reads them) that
 // reaches into the wider cone, with the span of its balls (os_item_in_cone's:
-// each shape's, grown by a quarter of the blend radius) along the axis, and
+// each shape's, grown by its blends' reach, os_item_reach) along the axis, and
 // whether it reaches into the camera rays' cone as the camera march's walk
 // sees it (os_union: it and every box above it do), so that the march
 // measures the same items from the list as from the walk.

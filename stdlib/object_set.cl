@@ -91,11 +91,12 @@ inline scalar os_prim_radius(__global const float* r)
 }
 
 // How far an item's smooth blend reaches below its primitives' minimum: a
-// quarter of its radius, 0 for one primitive. Its primitives' balls grown
-// by this hold its surface and hit band.
+// quarter of its radius for each blend in its chain (one blend may lower
+// the minimum by k/4, and the next blends from there), 0 for one primitive.
+// Its primitives' balls grown by this hold its surface and hit band.
 inline scalar os_item_reach(__global const float* item)
 {
-    return (int)item[1] == 1 ? 0.0f : 0.25f * item[2];
+    return (scalar)((int)item[1] - 1) * 0.25f * item[2];
 }
 
 // Whether an item may reach into the cone: some primitive's ball, grown by
