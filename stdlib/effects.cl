@@ -121,13 +121,16 @@ inline real shadow_soft(TIME_PARAM vec3 p, vec3 l, real tmin, real tmax, real k,
 // Ambient occlusion from distance probes along the normal (seed 001 part II):
 // in the open, the distance at height h above the surface is h; any shortfall
 // means nearby geometry. Nearer probes weigh more. 1 = unoccluded.
-inline real ao_normal_samples(TIME_PARAM vec3 p, vec3 n, int samples, real distance, real strength)
+// A probe counts only where the distance is below its height h, so it asks
+// for no more (scene_dist_probe: an object set's walk skips the boxes
+// farther than h), and only for the `live` lanes, whose values are used.
+inline real ao_normal_samples(TIME_PARAM vec3 p, vec3 n, int samples, real distance, real strength, mask live)
 {
     real occ = 0.0f;
     real w = 1.0f, wsum = 0.0f;
     for (int i = 1; i <= samples; ++i) {
         real h = distance * (real)((scalar)i / (scalar)samples);
-        real d = scene_dist(TIME_ARG v3_mad(p, n, h));
+        real d = scene_dist_probe(TIME_ARG v3_mad(p, n, h), h, live);
         occ += w * fmax(h - d, K(0.0f)) / h;
         wsum += w;
         w *= 0.7f;

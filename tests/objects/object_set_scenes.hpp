@@ -4,8 +4,13 @@
 #include <fmt/format.h>
 
 #include <random>
+#include <sstream>
 #include <string>
+#include <vector>
 
+#include "sdfc/frontend/lower_scene.hpp"
+#include "sdfc/passes/passes.hpp"
+#include "sdfc/source/yaml_loader.hpp"
 #include "sdfc_test_support.hpp"
 
 namespace sdfc::test {
@@ -42,6 +47,43 @@ inline std::string scene(size_t n, size_t group = 1, const std::string& extra = 
     s += fmt::format("      material: {}\n", mats[i % 3]);
   }
   return s;
+}
+
+// The scene as code: every pass but gather_object_sets.
+inline ir::Module unrolled(const std::string& yaml) {
+  ir::Module m = lower_scene(load_yaml_text(yaml, "test.yaml"), "test.yaml");
+  for (const auto& p : passes::pipeline())
+    if (p.name != "gather_object_sets") m = p.run(std::move(m));
+  return m;
+}
+
+
+struct Case {
+  std::string name;
+  std::string yaml;
+  double spread;
+  bool seen_whole = true;  // the set sees the world's points: the camera's cone, bounded normals
+};
+
+// The set turned and moved as one: it sees other points than the camera's
+// rays, so it is walked whole (a cone in the rays' frame would cull the
+// items it must measure, and the rays would pass through them).
+inline std::string turned(const std::string& yaml) {
+  const std::string head = "scene:\n  union:\n";
+  const size_t at = yaml.find(head) + head.size();
+  std::string out = yaml.substr(0, at) + "    - union:\n";
+  std::istringstream body(yaml.substr(at));
+  for (std::string line; std::getline(body, line);) out += "    " + line + "\n";
+  return out + "      rotate: [0, 0, 30]\n      translate: [0.5, 0, 0]\n";
+}
+
+inline std::vector<Case> cases() {
+  return {{"flat", scene(300), 5},
+          {"groups", scene(400, 4), 5},
+          {"with_floor", scene(200, 1, "    - plane: {normal: [0, 0, 1], offset: -0.5}\n      material: c\n"), 5},
+          {"coincident", scene(100, 1, "", 0.0), 1},
+          {"far_apart", scene(100, 1, "", 2000), 2000},
+          {"turned", turned(scene(200)), 6, false}};
 }
 
 }  // namespace sdfc::test

@@ -99,6 +99,14 @@ std::string emit_scene_functions(const ir::Module& m, const Literals& lit, std::
   } else {
     out += "__attribute__((noinline)) real scene_dist(TIME_PARAM vec3 p) { return scene_dist_inline(TIME_ARG p, M_TRUE); }\n";
   }
+  const auto& ao = m.plan.effects.ambient_occlusion;
+  if (ao.enabled && ao.method == ir::AmbientOcclusion::Method::NormalSamples) {
+    // an occlusion probe only needs the distance where it is below the probe's height
+    out += below ? "inline real scene_dist_probe(TIME_PARAM vec3 p, real below, mask live) "
+                   "{ return scene_dist_below(TIME_ARG p, below, live, os_cone_none()); }\n"
+                 : "inline real scene_dist_probe(TIME_PARAM vec3 p, real below, mask live) "
+                   "{ (void)below; (void)live; return scene_dist(TIME_ARG p); }\n";
+  }
   out += "\n// ---- scene distance with material: evaluated once per hit ----\n";
   auto with_material = [](CodeWriter& w, const kinds::Carried& v) {
     w.line("*mat = " + v.mat + ";");

@@ -154,7 +154,7 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
     if (ao.method == ir::AmbientOcclusion::Method::NormalSamples) {
       used.insert("ao_normal_samples");
       w.line(fmt::format("// effects.ambient_occlusion: {} probes along the normal", ao.samples));
-      w.line(fmt::format("real occlusion = ao_normal_samples(TIME_ARG pos, n, {}, {}, {});", ao.samples, lit.real(ao.distance),
+      w.line(fmt::format("real occlusion = ao_normal_samples(TIME_ARG pos, n, {}, {}, {}, hit);", ao.samples, lit.real(ao.distance),
                          lit.real(ao.strength)));
     } else {
       used.insert("ao_step_count");

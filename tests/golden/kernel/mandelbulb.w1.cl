@@ -96,7 +96,7 @@ vec3 sdfc_segment(TIME_PARAM vec3 ro, vec3 rd, mask active, real pixel_angle, re
         mat = SEL(mat, id, hit);
         real trap = scene_trap(TIME_ARG pos);  // orbit-trap colour, once per hit
         // effects.ambient_occlusion: 3 probes along the normal
-        real occlusion = ao_normal_samples(TIME_ARG pos, n, 3, 0.15f, 1.2f);
+        real occlusion = ao_normal_samples(TIME_ARG pos, n, 3, 0.15f, 1.2f, hit);
         vec3 lit = shade_surface(TIME_ARG pos, n, v3_scale(rd, -1.0f), id, trap, occlusion, h, hit);
         color = v3_select(color, lit, hit);
     }

@@ -37,6 +37,7 @@ inline __attribute__((always_inline)) real scene_dist_inline(TIME_PARAM vec3 p, 
 
 // ---- scene distance, called: every use outside the marching loops ----
 __attribute__((noinline)) real scene_dist(TIME_PARAM vec3 p) { return scene_dist_inline(TIME_ARG p, M_TRUE); }
+inline real scene_dist_probe(TIME_PARAM vec3 p, real below, mask live) { (void)below; (void)live; return scene_dist(TIME_ARG p); }
 
 // ---- scene distance with material: evaluated once per hit ----
 real scene_dist_mat(TIME_PARAM vec3 p, real* mat)
