@@ -20,15 +20,15 @@ Box3 prim_box(const Prim& p) {
 }
 
 // Where the item's surface can be: its primitives' boxes grown by how far
-// the smooth union reaches below their minimum (k/4 for each of its n - 1
-// blends, as a smooth union's bounds), and by a margin that keeps the
+// the smooth union reaches below their minimum (smooth_union_reach, as a
+// smooth union's bounds), and by a margin that keeps the
 // kernel's float box test a lower bound.
 Box3 item_box(const Item& it) {
   Box3 b = prim_box(it.prims[0]);
   for (const Prim& p : it.prims) b = b.united(prim_box(p));
   double scale = 1;
   for (int i = 0; i < 3; ++i) scale = std::max({scale, std::fabs(b.lo[i]), std::fabs(b.hi[i])});
-  return b.padded(double(it.prims.size() - 1) * it.blend * 0.25 + 1e-5 * scale);
+  return b.padded(smooth_union_reach(it.prims.size(), it.blend) + 1e-5 * scale);
 }
 
 struct Build {

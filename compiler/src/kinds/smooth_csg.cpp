@@ -28,10 +28,10 @@ double smax_poly(double a, double b, double k) {
 template <Select S>
 ir::Props props(const ir::Graph&, const ir::Node& n, const Kid& kid) {
   ir::Props p = fold_props(n, kid, S, 2);
-  // Each fold of a smooth union subtracts at most radius/4, so n children
-  // reach at most (n - 1) * radius/4 beyond the union of their bounds.
+  // A smooth union reaches beyond the union of its children's bounds by
+  // up to radius/4 for each fold (ir::smooth_union_reach).
   if (S == Select::Nearer && p.bounds.finite())
-    p.bounds = p.bounds.padded(double(n.children.size() - 1) * view<SmoothP>(n).radius * 0.25);
+    p.bounds = p.bounds.padded(ir::smooth_union_reach(n.children.size(), view<SmoothP>(n).radius));
   return p;
 }
 

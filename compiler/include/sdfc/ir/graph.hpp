@@ -38,6 +38,11 @@ struct Box3 {
   Box3 padded(double m) const;
 };
 
+// How far a chain of polynomial smooth blends of radius k over n inputs can
+// reach below the nearest input: each of its n - 1 blends may lower the
+// smaller of its two inputs by up to k/4. Bounds grow by it.
+inline double smooth_union_reach(size_t n, double k) { return n < 2 ? 0.0 : double(n - 1) * k * 0.25; }
+
 // Facts inferred per node by the infer_properties pass.
 struct Props {
   bool known = false;
