@@ -1,7 +1,8 @@
 // Object sets in images (sdfc/ir/object_set.hpp): a scene renders the same
 // image with its union as data as with it unrolled, its camera rays' cones
-// hit what the whole union hits, and its hits' shading and occlusion probes,
-// which ask the set for less, get the values of a whole walk. On PoCL.
+// hit what the whole union hits, and its hits' shading (path-traced too) and
+// occlusion probes, which ask the set for less, get the values of a whole
+// walk. On PoCL.
 #include <gtest/gtest.h>
 
 #include <functional>
@@ -174,6 +175,38 @@ TEST(ObjectSetRender, OcclusionProbesBoundedByTheirHeight) {
     }
   }
   EXPECT_GT(differ_halved, 0u);
+}
+
+// The path integrator's hits take their material first and bound their
+// normals' taps by its distance, as the direct integrator's do: the image
+// of the unrolled union, bit for bit. Taps bounded by less give another. A
+// set walked whole (turned) keeps the unbounded taps.
+TEST(ObjectSetRender, PathTracedHitsBoundTheirNormalsWithTheSameImage) {
+  const std::string head = "render: {width: 96, height: 64}", bound = "reach * K(1.001f)";
+  size_t differ_tight = 0;
+  for (const Case& c : cases()) {
+    if (c.name != "flat" && c.name != "groups" && c.name != "turned") continue;
+    SCOPED_TRACE(c.name);
+    std::string yaml = c.yaml;
+    yaml.replace(yaml.find(head), head.size(), "render: {width: 96, height: 64, integrator: path, samples: 2, max_bounces: 2}");
+    ir::Module set = test::compile_text(yaml), code = unrolled(yaml);
+    for (int width : {1, 64}) {
+      SCOPED_TRACE(width);
+      codegen::EmitOptions opt{width};
+      opt.aovs = true;
+      const std::string k = codegen::emit_opencl(set, opt).source;
+      ASSERT_EQ(k.find("normal_tetrahedral_below(TIME_ARG pos, h, d_hit, hit, os_cone_none());") != std::string::npos,
+                c.seen_whole);
+      if (!c.seen_whole) continue;
+      const sdfrt::FloatImage want = render(code, opt);
+      EXPECT_EQ(differing(render(set, opt), want), 0u);
+      differ_tight += differing(render(set, opt, true, [&](std::string s) {
+                                  return s.replace(s.find(bound), bound.size(), "reach * K(0.25f)");
+                                }),
+                                want);
+    }
+  }
+  EXPECT_GT(differ_tight, 0u);
 }
 
 }  // namespace

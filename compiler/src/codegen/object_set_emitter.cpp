@@ -84,6 +84,21 @@ bool bounded_shading(const ir::Module& m) {
   return m.plan.march.normals != ir::NormalMethod::Dual && !m.analyses.material_blend && bounded_normals(m);
 }
 
+void emit_bounded_hit(CodeWriter& w, const ir::Module& m, const Literals& lit, std::set<std::string>& used,
+                      const std::string& cone) {
+  const char* normal_fn =
+      m.plan.march.normals == ir::NormalMethod::Central ? "normal_central_below" : "normal_tetrahedral_below";
+  used.insert(normal_fn);
+  if (const auto& uni = m.analyses.uniform_material) {
+    w.line(fmt::format("id = {};  // the scene's one material", lit.typed(*uni)));
+    w.line(fmt::format("const real d_hit = scene_dist_below(TIME_ARG pos, K(1e30f), hit, {});", cone));
+  } else {
+    w.line(fmt::format("const real d_hit = scene_dist_mat_hit(TIME_ARG pos, hit, {}, &id);", cone));
+  }
+  w.line(fmt::format("n = {}(TIME_ARG pos, h, d_hit, hit, {});  // the taps are at most d_hit + their reach", normal_fn,
+                     cone));
+}
+
 bool shading_from_list(const ir::Module& m) { return bounded_shading(m) && !camera_list_gather(m).empty(); }
 
 std::string camera_list_gather(const ir::Module& m) {

@@ -46,6 +46,12 @@ bool bounded_normals(const ir::Module& m);
 // Whether the segment shades its hits with bounded normals: bounded_normals,
 // with finite-difference normals and one material per point (no blends).
 bool bounded_shading(const ir::Module& m);
+// With bounded_shading, at a hit `pos` (lanes `hit`, finite-difference step
+// `h`): the material into `id` (declared before) and the distance d_hit,
+// then the normal n from taps bounded by d_hit. The set is read through
+// `cone`, an os_cone expression (os_cone_none() walks it).
+void emit_bounded_hit(CodeWriter& w, const ir::Module& m, const Literals& lit, std::set<std::string>& used,
+                      const std::string& cone);
 // Whether, besides, the packet's list (camera_list_gather) answers the
 // hits' material and normal taps (os_union_shade): the list then holds a
 // cone wider by the farthest tap's angle.

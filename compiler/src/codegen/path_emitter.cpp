@@ -12,6 +12,7 @@
 
 #include "entry_emitters.hpp"
 #include "kernel_text.hpp"
+#include "object_set_emitter.hpp"
 #include "shading_emitter.hpp"
 
 namespace sdfc::codegen::detail {
@@ -69,7 +70,10 @@ std::string hit_function(const ir::Module& m, const Literals& lit, std::set<std:
   w.open("{");
   w.line("vec3 pos = v3_mad(ro, rd, t);");
   w.line(fmt::format("real h = fmax(pixel_angle * t * {}, K({}));", lit.real(s.normal_step), lit.real(s.normal_step_floor)));
-  if (s.normals == ir::NormalMethod::Dual) {
+  const bool below = bounded_shading(m);  // with an object set, as the direct integrator's hits
+  if (below) {
+    emit_bounded_hit(w, m, lit, used, "os_cone_none()");
+  } else if (s.normals == ir::NormalMethod::Dual) {
     w.line("n = scene_normal_dual(pos);");
     w.line("(void)h;");
   } else {
@@ -84,7 +88,9 @@ std::string hit_function(const ir::Module& m, const Literals& lit, std::set<std:
     w.line("albedo = look.albedo;");
     w.line("(void)spec; (void)shin;");
   } else {
-    if (const auto& uni = m.analyses.uniform_material)
+    if (below)
+      w.line("(void)d_hit;");
+    else if (const auto& uni = m.analyses.uniform_material)
       w.line(fmt::format("id = {};", lit.typed(*uni)));
     else
       w.line("(void)scene_dist_mat(TIME_ARG pos, &id);");
@@ -117,17 +123,10 @@ std::string path_functions(const ir::Module& m, const ir::RenderPlan& plan, cons
   const ir::RayBounds* bounds = m.analyses.ray_bounds ? &*m.analyses.ray_bounds : nullptr;
   const bool clamp = tr.clamp > 0;
   const bool envmap = env_map_used(plan);
-  used.insert("path_rand");
-  used.insert("path_cosine_dir");
+  used.insert({"path_rand", "path_cosine_dir"});
   if (clamp) used.insert("path_firefly");
-  if (glossy) {
-    used.insert("path_glossy_eval");
-    used.insert("path_ggx_half");
-  }
-  if (glass) {
-    used.insert("glass_fresnel");
-    used.insert("glass_absorb");
-  }
+  if (glossy) used.insert({"path_glossy_eval", "path_ggx_half"});
+  if (glass) used.insert({"glass_fresnel", "glass_absorb"});
   std::string out = detail::emit_material_table(plan, m.analyses, lit);
   if (glossy || emission || glass) out += surface_table(plan, glossy, emission, glass, lit) + "\n";
   out += hit_function(m, lit, used, glass) + "\n";

@@ -109,22 +109,14 @@ std::string segment_function(const ir::Module& m, const Literals& lit, std::set<
   if (s.normals == ir::NormalMethod::Dual) {
     w.line("n = scene_normal_dual(pos);  // exact gradient by forward-mode differentiation");
   } else if (below) {
-    const char* normal_fn = s.normals == ir::NormalMethod::Central ? "normal_central_below" : "normal_tetrahedral_below";
-    used.insert(normal_fn);
     if (shading_from_list(m)) {
       used.insert("os_cone_shading");
       w.line("const os_cone shade = os_cone_shading(cone);  // the set's items beside the rays, where the list holds them");
     } else {
       w.line("const os_cone shade = os_cone_none();");
     }
-    if (const auto& uni = m.analyses.uniform_material) {
-      w.line(fmt::format("real id = {};  // the scene's one material", lit.typed(*uni)));
-      w.line("const real d_hit = scene_dist_below(TIME_ARG pos, K(1e30f), hit, shade);");
-    } else {
-      w.line("real id;");
-      w.line("const real d_hit = scene_dist_mat_hit(TIME_ARG pos, hit, shade, &id);");
-    }
-    w.line(fmt::format("n = {}(TIME_ARG pos, h, d_hit, hit, shade);  // the taps are at most d_hit + their reach", normal_fn));
+    w.line("real id;");
+    emit_bounded_hit(w, m, lit, used, "shade");
   } else {
     const char* normal_fn = s.normals == ir::NormalMethod::Central ? "normal_central" : "normal_tetrahedral";
     used.insert(normal_fn);
