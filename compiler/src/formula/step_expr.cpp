@@ -82,12 +82,15 @@ void expr_eval(const Step& st, RefState& s) {
   expr::Env env{{"x", s.z[0]}, {"y", s.z[1]}, {"z", s.z[2]}, {"cx", s.c[0]}, {"cy", s.c[1]}, {"cz", s.c[2]}, {"time", 0}};
   V3 next;
   for (int i = 0; i < 3; ++i) next[size_t(i)] = expr::evaluate(component(st, i), env);
+  // the partials, each evaluated once (the expressions are walked with their names looked up)
+  double d[18];
+  for (size_t i = 0; i < (s.mandel ? 18u : 9u); ++i) d[i] = expr::evaluate(st.partials[i], env);
   std::array<V3, 3> j{};
   for (int k = 0; k < 3; ++k)
     for (int i = 0; i < 3; ++i) {
       double v = 0;
-      for (int m = 0; m < 3; ++m) v += expr::evaluate(st.partials[size_t(3 * i + m)], env) * s.j[size_t(k)][size_t(m)];
-      if (s.mandel) v += expr::evaluate(st.partials[size_t(9 + 3 * i + k)], env);
+      for (int m = 0; m < 3; ++m) v += d[3 * i + m] * s.j[size_t(k)][size_t(m)];
+      if (s.mandel) v += d[9 + 3 * i + k];
       j[size_t(k)][size_t(i)] = v;
     }
   s.j = j;
