@@ -1,11 +1,12 @@
 // The expression language: parsing with located errors, folding, point and
-// interval evaluation, derivatives and OpenCL text.
+// interval evaluation, derivatives, OpenCL text and the flattened tape.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
 #include "sdfc/expr/expr.hpp"
+#include "sdfc/expr/tape.hpp"
 
 namespace sdfc::expr {
 namespace {
@@ -157,6 +158,37 @@ TEST(ExprOpenCL, EmitsBuiltinsAndExpandsSmallPowers) {
   EXPECT_EQ(to_opencl(p("min(x, 1)"), var, lit), "fmin(p.x, 1.0f)");
   EXPECT_EQ(to_opencl(p("x^0.5"), var, lit), "pow(p.x, 0.5f)");
   EXPECT_EQ(to_opencl(p("x^-2"), var, lit), "(1.0f / (p.x * p.x))");
+}
+
+// The flattened tape gives the tree walk's values bit for bit, for every
+// root at once, and a variable it is not given throws as the walk does.
+TEST(ExprTape, SameValuesAsTheTreeWalk) {
+  const char* exprs[] = {"0.05*sin(10*x)*sin(10*y)*sin(10*z)", "x^3 * y - exp(x * z)", "sqrt(x*x + y*y + 1) / (2 + cos(z))",
+                         "mix(x, y*y, z) + smoothstep(-1, 2, x)", "(x + 3) ^ (y + 2)", "-log(x + 2) * tan(y / 3) + time"};
+  std::vector<ExprPtr> roots;
+  for (const char* s : exprs) {
+    roots.push_back(p(s));
+    roots.push_back(fold(derivative(roots.back(), "x")));
+  }
+  const Tape tape(roots, {"time", "z", "y", "x"});
+  ASSERT_EQ(tape.size(), roots.size());
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-3, 3);
+  for (int trial = 0; trial < 50; ++trial) {
+    const double at[4] = {u(rng), u(rng), u(rng), u(rng)};
+    std::vector<double> out(roots.size());
+    tape.run(at, out.data());
+    const Env env{{"time", at[0]}, {"z", at[1]}, {"y", at[2]}, {"x", at[3]}};
+    for (size_t k = 0; k < roots.size(); ++k) {
+      const double want = evaluate(roots[k], env);
+      if (std::isnan(want)) EXPECT_TRUE(std::isnan(out[k])) << to_string(roots[k]);
+      else EXPECT_EQ(out[k], want) << to_string(roots[k]);
+    }
+  }
+  const Tape partial({p("x + y")}, {"x"});
+  double out = 0;
+  const double x = 1;
+  EXPECT_THROW(partial.run(&x, &out), std::logic_error);
 }
 
 }  // namespace

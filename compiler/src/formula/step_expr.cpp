@@ -8,6 +8,7 @@
 
 #include "../codegen/code_writer.hpp"
 #include "../codegen/kernel_text.hpp"
+#include "sdfc/expr/tape.hpp"
 #include "sdfc/formula/step.hpp"
 
 namespace sdfc::formula {
@@ -32,6 +33,19 @@ void differentiate(Step& st) {
   for (const char* const* vars : {kZ, kC})
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) st.partials.push_back(expr::fold(expr::derivative(component(st, i), vars[j])));
+  std::vector<expr::ExprPtr> roots{component(st, 0), component(st, 1), component(st, 2)};
+  roots.insert(roots.end(), st.partials.begin(), st.partials.end());
+  st.tape = std::make_shared<const expr::Tape>(roots, std::vector<std::string>{"x", "y", "z", "cx", "cy", "cz", "time"});
+  // Whether the partials d(new z)/dz are constants: the folded partials of
+  // 2*x still hold 0*x (folding it away would be wrong for infinite x), so
+  // their values at a few points are compared instead.
+  const double pts[3][7] = {{0.3, -0.7, 1.1, 0.2, 0.5, -0.4, 0}, {-1.3, 0.4, 0.9, -0.6, 0.1, 0.8, 0}, {2.1, 1.7, -0.5, 0.3, -0.9, 1.2, 0}};
+  double v[3][21];
+  for (int k = 0; k < 3; ++k) st.tape->run(pts[k], v[k]);
+  st.linear = true;
+  for (size_t i = 3; i < 12; ++i)
+    for (int k = 1; k < 3; ++k)
+      st.linear = st.linear && std::fabs(v[k][i] - v[0][i]) <= 1e-12 * std::max(1.0, std::fabs(v[0][i]));
 }
 
 namespace {
@@ -79,43 +93,25 @@ void expr_emit(const Step& st, EmitState& s) {
 }
 
 void expr_eval(const Step& st, RefState& s) {
-  expr::Env env{{"x", s.z[0]}, {"y", s.z[1]}, {"z", s.z[2]}, {"cx", s.c[0]}, {"cy", s.c[1]}, {"cz", s.c[2]}, {"time", 0}};
-  V3 next;
-  for (int i = 0; i < 3; ++i) next[size_t(i)] = expr::evaluate(component(st, i), env);
-  // the partials, each evaluated once (the expressions are walked with their names looked up)
-  double d[18];
-  for (size_t i = 0; i < (s.mandel ? 18u : 9u); ++i) d[i] = expr::evaluate(st.partials[i], env);
+  const double at[7] = {s.z[0], s.z[1], s.z[2], s.c[0], s.c[1], s.c[2], 0};
+  double v[21];  // the new x, y, z, then the partials (differentiate)
+  st.tape->run(at, v);
+  const double* d = v + 3;
   std::array<V3, 3> j{};
   for (int k = 0; k < 3; ++k)
     for (int i = 0; i < 3; ++i) {
-      double v = 0;
-      for (int m = 0; m < 3; ++m) v += d[3 * i + m] * s.j[size_t(k)][size_t(m)];
-      if (s.mandel) v += d[9 + 3 * i + k];
-      j[size_t(k)][size_t(i)] = v;
+      double sum = 0;
+      for (int m = 0; m < 3; ++m) sum += d[3 * i + m] * s.j[size_t(k)][size_t(m)];
+      if (s.mandel) sum += d[9 + 3 * i + k];
+      j[size_t(k)][size_t(i)] = sum;
     }
   s.j = j;
-  s.z = next;
+  s.z = {v[0], v[1], v[2]};
 }
 
 }  // namespace
 
-// Whether every partial of the step is a constant: a linear map, no power.
-bool expr_is_linear(const Step& st) {
-  // The folded partials of 2*x still hold 0*x (folding it away would be
-  // wrong for infinite x), so compare their values at a few points instead.
-  const double pts[3][6] = {{0.3, -0.7, 1.1, 0.2, 0.5, -0.4}, {-1.3, 0.4, 0.9, -0.6, 0.1, 0.8}, {2.1, 1.7, -0.5, 0.3, -0.9, 1.2}};
-  for (size_t i = 0; i < 9; ++i) {
-    double first = 0;
-    for (int k = 0; k < 3; ++k) {
-      const double* q = pts[k];
-      expr::Env env{{"x", q[0]}, {"y", q[1]}, {"z", q[2]}, {"cx", q[3]}, {"cy", q[4]}, {"cz", q[5]}, {"time", 0}};
-      double v = expr::evaluate(st.partials.at(i), env);
-      if (k == 0) first = v;
-      else if (!(std::fabs(v - first) <= 1e-12 * std::max(1.0, std::fabs(first)))) return false;
-    }
-  }
-  return true;
-}
+bool expr_is_linear(const Step& st) { return st.linear; }
 
 extern const StepDef kExpr{"expr", {}, expr_conformal, true, expr_emit, expr_eval,
                            "new x, y, z as expressions of x, y, z and cx, cy, cz", false, keeps_dr};

@@ -5,11 +5,13 @@
 // (emit_chain.cpp) and evaluates it in double for the tests (evaluate_chain.cpp).
 #include <array>
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "sdfc/expr/expr.hpp"
+#include "sdfc/expr/tape.hpp"
 #include "sdfc/support/diagnostics.hpp"
 
 namespace sdfc::formula {
@@ -27,6 +29,8 @@ struct Step {
   std::array<expr::ExprPtr, 3> e{};  // expr: the new x, y, z (null keeps the component)
   // expr: d(new z_i)/dz_j at 3i + j, then d(new z_i)/dc_j at 9 + 3i + j (folded)
   std::vector<expr::ExprPtr> partials;
+  std::shared_ptr<const expr::Tape> tape;  // expr: x, y, z, then the partials, at (x, y, z, cx, cy, cz, time)
+  bool linear = false;                     // expr: every partial is a constant (expr_is_linear)
   int from = 0;                      // runs on iterations from <= i < until
   int until = kMaxIterations;
   int period = 0;                    // > 0: from/until count iterations modulo period (a preset's cycle)
