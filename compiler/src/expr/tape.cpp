@@ -19,8 +19,12 @@ int Tape::add(const ExprPtr& e, const std::vector<std::string>& vars) {
   n.value = e->value;
   if (e->op == Op::Var) {
     const auto it = std::find(vars.begin(), vars.end(), e->name);
-    n.var = it == vars.end() ? -1 : int(it - vars.begin());
-    n.name = &e->name;
+    if (it != vars.end()) {
+      n.var = int(it - vars.begin());
+    } else {
+      unknown_.push_back(e->name);
+      n.var = -int(unknown_.size());
+    }
   }
   if (e->op == Op::Call) {
     n.fn = find_function(e->name);
@@ -42,7 +46,7 @@ void Tape::run(const double* vars, double* out) const {
       case Op::Number:
       case Op::Slot: v[i] = n.value; break;
       case Op::Var:
-        if (n.var < 0) throw std::logic_error("expression variable '" + *n.name + "' has no value");
+        if (n.var < 0) throw std::logic_error("expression variable '" + unknown_[size_t(-1 - n.var)] + "' has no value");
         v[i] = vars[n.var];
         break;
       case Op::Neg: v[i] = -v[n.args[0]]; break;

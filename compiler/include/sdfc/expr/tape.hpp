@@ -24,15 +24,15 @@ class Tape {
   struct Node {
     Op op;
     double value = 0;               // Number, Slot
-    int var = -1;                   // Var: index into vars, -1 unknown
+    int var = 0;                    // Var: index into vars, or -1 - index into unknown_
     int args[3] = {-1, -1, -1};     // earlier nodes
     int arity = 0;                  // Call
     const Function* fn = nullptr;   // Call
-    const std::string* name = nullptr;  // Var: for the error
   };
   int add(const ExprPtr& e, const std::vector<std::string>& vars);
   std::vector<Node> nodes_;
   std::vector<int> roots_;
+  std::vector<std::string> unknown_;  // variables not in vars, named in run()'s error
 };
 
 }  // namespace sdfc::expr
