@@ -22,7 +22,7 @@ Plan plan(const Chain& c) {
   const Step* power = nullptr;
   for (const Step& s : c.steps) {
     if (!non_conformal && !s.def->conformal(s)) non_conformal = &s;
-    if (!power && s.def->power && !(s.def->name == "expr" && expr_is_linear(s))) power = &s;
+    if (!power && s.def->power && !(s.def->name == "expr" && s.linear)) power = &s;
   }
   std::string derivative;
   if (c.de == DeChoice::Jacobian) {

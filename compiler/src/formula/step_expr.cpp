@@ -111,8 +111,6 @@ void expr_eval(const Step& st, RefState& s) {
 
 }  // namespace
 
-bool expr_is_linear(const Step& st) { return st.linear; }
-
 extern const StepDef kExpr{"expr", {}, expr_conformal, true, expr_emit, expr_eval,
                            "new x, y, z as expressions of x, y, z and cx, cy, cz", false, keeps_dr};
 

@@ -30,7 +30,7 @@ struct Step {
   // expr: d(new z_i)/dz_j at 3i + j, then d(new z_i)/dc_j at 9 + 3i + j (folded)
   std::vector<expr::ExprPtr> partials;
   std::shared_ptr<const expr::Tape> tape;  // expr: x, y, z, then the partials, at (x, y, z, cx, cy, cz, time)
-  bool linear = false;                     // expr: every partial is a constant (expr_is_linear)
+  bool linear = false;                     // expr: every d(new z)/dz is a constant: a linear map, no power
   int from = 0;                      // runs on iterations from <= i < until
   int until = kMaxIterations;
   int period = 0;                    // > 0: from/until count iterations modulo period (a preset's cycle)

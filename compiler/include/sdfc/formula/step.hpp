@@ -112,8 +112,7 @@ void apply_rows4(RefState& s, const std::array<double, 16>& m);
 }  // namespace sdfc::formula
 
 namespace sdfc::formula {
-// An expr step whose partials are all constant (a linear map, no power).
-bool expr_is_linear(const Step& st);
-// Fills an expr step's partials (the reader calls it once).
+// Fills an expr step's partials, its tape (x, y, z, then the partials) and
+// whether it is linear (the reader calls it once).
 void differentiate(Step& st);
 }  // namespace sdfc::formula
