@@ -134,13 +134,13 @@ inline real os_union_list(vec3 p, __global const float* items, __global const fl
 {
     os_list* l = c.list;
     const real along = (p.x - c.ox) * c.ax + (p.y - c.oy) * c.ay + (p.z - c.oz) * c.az;
-    const scalar nearest = OS_LANES_MIN(SEL(K(1e30f), along, live)), farthest = OS_LANES_MAX(SEL(K(-1e30f), along, live));
+    const scalar nearest = LANES_MIN(SEL(K(1e30f), along, live)), farthest = LANES_MAX(SEL(K(-1e30f), along, live));
     // twice the hit band at the farthest lane (t is at most along / cos a)
     const scalar behind = nearest - c.margin * farthest / c.cos_a;
     while (l->first < l->n && l->hi[l->first] < behind) ++l->first;
     real best = bound, m = (real)(0.0f);
     for (int k = l->first; k < l->n; ++k) {
-        if (l->lo[k] - farthest > OS_LANES_MAX(SEL(K(-1e30f), best, live))) break;
+        if (l->lo[k] - farthest > LANES_MAX(SEL(K(-1e30f), best, live))) break;
         if (!l->in_camera[k] || l->hi[k] < behind) continue;
         const int i = l->item[k];
         const real d = os_item(p, items + 4 * i, prims);
@@ -172,10 +172,10 @@ inline bool os_union_shade(vec3 p, __global const float* items, __global const f
     const vec3 w = v3(v.x - along * c.ax, v.y - along * c.ay, v.z - along * c.az);
     // less a rounding slack: the gather's cone test rounds too
     const real depth = along * l->sin_c - sqrt(v3_dot(w, w)) * l->cos_c - K(1e-5f) * (K(1.0f) + fabs(along));
-    const scalar nearest = OS_LANES_MIN(SEL(K(1e30f), along, live)), farthest = OS_LANES_MAX(SEL(K(-1e30f), along, live));
+    const scalar nearest = LANES_MIN(SEL(K(1e30f), along, live)), farthest = LANES_MAX(SEL(K(-1e30f), along, live));
     real best = bound, m = (real)(0.0f);
     for (int k = 0; k < l->n; ++k) {
-        const scalar worst = OS_LANES_MAX(SEL(K(-1e30f), best, live));
+        const scalar worst = LANES_MAX(SEL(K(-1e30f), best, live));
         if (l->lo[k] - farthest > worst) break;
         if (nearest - l->hi[k] > worst) continue;
         const int i = l->item[k];

@@ -20,7 +20,7 @@ inline real os_item(vec3 p, __global const float* item, __global const float* pr
 }
 
 //! fn os_cone
-//! deps: vec3_ops
+//! deps: vec3_ops, lanes_minmax
 //! class: helper
 // The cone from the camera that holds a packet's camera rays and the hit
 // band around each: an object set's items outside it can neither stop those
@@ -47,14 +47,6 @@ inline os_cone os_cone_none(void)
     os_cone c = {0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0, 0, 0};
     return c;
 }
-
-#if SDFC_WIDTH == 1
-#define OS_LANES_MIN(x) (x)
-#define OS_LANES_MAX(x) (x)
-#else
-#define OS_LANES_MIN(x) __builtin_reduce_min(x)
-#define OS_LANES_MAX(x) __builtin_reduce_max(x)
-#endif
 
 // How far the point (x, y, z) lies from the cone's axis, and `along` it.
 inline scalar os_axis_perp(const os_cone c, scalar x, scalar y, scalar z, scalar* along)
@@ -242,18 +234,18 @@ inline __attribute__((always_inline)) real os_union(vec3 p, __global const float
 inline os_cone os_camera_cone(vec3 ro, vec3 rd, real band, real reach)
 {
     os_cone c;
-    c.ox = OS_LANES_MIN(ro.x);
-    c.oy = OS_LANES_MIN(ro.y);
-    c.oz = OS_LANES_MIN(ro.z);
-    const scalar ax = OS_LANES_MIN(rd.x) + OS_LANES_MAX(rd.x), ay = OS_LANES_MIN(rd.y) + OS_LANES_MAX(rd.y),
-                 az = OS_LANES_MIN(rd.z) + OS_LANES_MAX(rd.z);
+    c.ox = LANES_MIN(ro.x);
+    c.oy = LANES_MIN(ro.y);
+    c.oz = LANES_MIN(ro.z);
+    const scalar ax = LANES_MIN(rd.x) + LANES_MAX(rd.x), ay = LANES_MIN(rd.y) + LANES_MAX(rd.y),
+                 az = LANES_MIN(rd.z) + LANES_MAX(rd.z);
     const scalar len = sqrt(ax * ax + ay * ay + az * az);
     c.ax = ax / len;
     c.ay = ay / len;
     c.az = az / len;
-    const scalar cos_t = fmin(OS_LANES_MIN(rd.x * c.ax + rd.y * c.ay + rd.z * c.az), K(1.0f));
+    const scalar cos_t = fmin(LANES_MIN(rd.x * c.ax + rd.y * c.ay + rd.z * c.az), K(1.0f));
     const scalar sin_t = sqrt(fmax(K(1.0f) - cos_t * cos_t, K(0.0f)));
-    const scalar m = 2.0f * OS_LANES_MAX(band);
+    const scalar m = 2.0f * LANES_MAX(band);
     const scalar cos_m = cos(m), sin_m = sin(m);
     c.cos_a = cos_t * cos_m - sin_t * sin_m;
     c.sin_a = sin_t * cos_m + cos_t * sin_m;
@@ -261,7 +253,7 @@ inline os_cone os_camera_cone(vec3 ro, vec3 rd, real band, real reach)
     c.on = len > 0.0f && c.cos_a > 0.2f;
     // Widened only where that less than doubles the rays' own angle: around
     // one lane's pixel the taps' reach would list several times the items.
-    const scalar w = 2.0f * OS_LANES_MAX(reach), cos_r = cos(w), sin_r = sin(w);
+    const scalar w = 2.0f * LANES_MAX(reach), cos_r = cos(w), sin_r = sin(w);
     c.cos_w = c.cos_a * cos_r - c.sin_a * sin_r;
     c.sin_w = c.sin_a * cos_r + c.cos_a * sin_r;
     if (w == 0.0f || w > sin_t || c.cos_w <= 0.2f) c.cos_w = c.cos_a, c.sin_w = c.sin_a;

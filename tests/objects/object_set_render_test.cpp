@@ -35,12 +35,13 @@ sdfrt::FloatImage render(const ir::Module& m, const codegen::EmitOptions& opt = 
   return r.render(codegen::frame_params(m.plan, w, h, 0.0), w, h);
 }
 
-// Runs `check` on the case's set at packet widths 1, 16 and 64, with the
-// material, normal and hit planes.
-void each_width(const Case& c, const std::function<void(const ir::Module&, const codegen::EmitOptions&)>& check) {
+// Runs `check` on the case's set at packet widths 1, 16 and 64 (or those
+// given), with the material, normal and hit planes.
+using Check = std::function<void(const ir::Module&, const codegen::EmitOptions&)>;
+void each_width(const Case& c, const Check& check, std::initializer_list<int> widths = {1, 16, 64}) {
   SCOPED_TRACE(c.name);
   ir::Module set = test::compile_text(c.yaml);
-  for (int width : {1, 16, 64}) {
+  for (int width : widths) {
     SCOPED_TRACE(width);
     codegen::EmitOptions opt{width};
     opt.aovs = true;
@@ -84,32 +85,33 @@ TEST(ObjectSetRender, SameImageAsTheUnrolledUnion) {
 // packet width (one lane: the thinnest cone). The march measures the cone's
 // items from a list (os_list) where it holds them all, and walks the
 // hierarchy where not ("coincident": all 100 items in every cone).
-TEST(ObjectSetRender, CameraConesHitWhatTheWholeUnionHits) {
-  for (const Case& c : cases()) {
-    each_width(c, [&](const ir::Module& set, const codegen::EmitOptions& opt) {
-      const std::string k = codegen::emit_opencl(set, opt).source;
-      ASSERT_EQ(k.find("= os_camera_cone(") != std::string::npos, c.seen_whole);
-      ASSERT_EQ(k.find("os_list_gather(&list, cone, ") != std::string::npos, c.seen_whole);
-      sdfrt::FloatImage a = render(set, opt), b = render(set, opt, false);
-      auto ha = a.plane(a.plane_index("hit")), hb = b.plane(b.plane_index("hit"));
-      const int w = a.width, h = a.height;
-      auto edge = [&](int x, int y) {
-        for (auto [dx, dy] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
-          int u = x + dx, v = y + dy;
-          if (u >= 0 && v >= 0 && u < w && v < h && (hb[size_t(v * w + u)] > 0) != (hb[size_t(y * w + x)] > 0)) return true;
+Check hits_as_the_whole_union(const Case& c) {
+  return [&c](const ir::Module& set, const codegen::EmitOptions& opt) {
+    const std::string k = codegen::emit_opencl(set, opt).source;
+    ASSERT_EQ(k.find("= os_camera_cone(") != std::string::npos, c.seen_whole);
+    ASSERT_EQ(k.find("os_list_gather(&list, cone, ") != std::string::npos, c.seen_whole);
+    sdfrt::FloatImage a = render(set, opt), b = render(set, opt, false);
+    auto ha = a.plane(a.plane_index("hit")), hb = b.plane(b.plane_index("hit"));
+    const int w = a.width, h = a.height;
+    auto edge = [&](int x, int y) {
+      for (auto [dx, dy] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+        int u = x + dx, v = y + dy;
+        if (u >= 0 && v >= 0 && u < w && v < h && (hb[size_t(v * w + u)] > 0) != (hb[size_t(y * w + x)] > 0)) return true;
+      }
+      return false;
+    };
+    size_t silhouette = 0;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        if ((ha[size_t(y * w + x)] > 0) != (hb[size_t(y * w + x)] > 0)) {
+          EXPECT_TRUE(edge(x, y)) << "pixel " << x << ", " << y;
+          ++silhouette;
         }
-        return false;
-      };
-      size_t silhouette = 0;
-      for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x)
-          if ((ha[size_t(y * w + x)] > 0) != (hb[size_t(y * w + x)] > 0)) {
-            EXPECT_TRUE(edge(x, y)) << "pixel " << x << ", " << y;
-            ++silhouette;
-          }
-      EXPECT_LT(silhouette, size_t(w * h) / 100);
-    });
-  }
+    EXPECT_LT(silhouette, size_t(w * h) / 100);
+  };
+}
+TEST(ObjectSetRender, CameraConesHitWhatTheWholeUnionHits) {
+  for (const Case& c : cases()) each_width(c, hits_as_the_whole_union(c));
 }
 
 // The hits' material and normal taps read the packet's list (os_union_shade)
@@ -118,13 +120,13 @@ TEST(ObjectSetRender, CameraConesHitWhatTheWholeUnionHits) {
 // A list of the camera's cone alone, made to shade, answers less often
 // (none beside the packet's edges), still with the walk's values; without
 // its check it gives others.
+std::string replace(std::string k, const std::string& from, const std::string& to) {
+  const size_t at = k.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return at == std::string::npos ? k : k.replace(at, from.size(), to);
+}
+std::string walked(const std::string& k) { return replace(k, "os_cone_shading(cone)", "os_cone_none()"); }
 TEST(ObjectSetRender, HitsShadedFromTheListAsFromTheWalk) {
-  auto replace = [](std::string k, const std::string& from, const std::string& to) {
-    const size_t at = k.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    return at == std::string::npos ? k : k.replace(at, from.size(), to);
-  };
-  auto walked = [&](const std::string& k) { return replace(k, "os_cone_shading(cone)", "os_cone_none()"); };
   auto narrow = [&](const std::string& k) {
     return replace(replace(k, "pixel_angle * 0.8660254f);", "0.0f);"), "if (c.cos_w == c.cos_a) c.list = 0;", "");
   };
@@ -143,6 +145,20 @@ TEST(ObjectSetRender, HitsShadedFromTheListAsFromTheWalk) {
     });
   }
   EXPECT_GT(differ_unchecked, 0u);
+}
+
+// The list's loops skip items by the live lanes' nearest and farthest
+// (lanes_reduce, a tree over the packet's halves that differs by width):
+// at the other packet widths too, the camera rays hit what the whole union
+// hits and the hits are shaded with the walk's values.
+TEST(ObjectSetRender, ListsReadTheirLanesAtEveryWidth) {
+  for (const Case& c : cases()) {
+    if (c.name != "flat" && c.name != "groups") continue;
+    each_width(c, hits_as_the_whole_union(c), {2, 4, 8, 32});
+    each_width(c, [](const ir::Module& set, const codegen::EmitOptions& opt) {
+      EXPECT_EQ(differing(render(set, opt), render(set, opt, true, walked)), 0u);
+    }, {2, 4, 8, 32});
+  }
 }
 
 // An occlusion probe h above the hit counts only where the distance is
