@@ -3,16 +3,22 @@
 //! class: bound
 // One item of an object set (see the compiler's ir/object_set.hpp for the
 // layout): a sphere or box record, or several smooth-united in order, the
-// same operations the unrolled union would do. Always inlined: a call
-// copies the packet's point (768 bytes at 64 lanes) onto the stack, about
-// a sixth of the list march's time at 10 000 objects.
+// same operations the unrolled union would do. In packets always inlined:
+// a call copies the packet's point (768 bytes at 64 lanes) onto the stack,
+// about a sixth of the list march's time at 10 000 objects. One lane gains
+// nothing by it and ran 4 % slower.
+#if SDFC_WIDTH == 1
+#define OS_ITEM_INLINE inline
+#else
+#define OS_ITEM_INLINE inline __attribute__((always_inline))
+#endif
 inline real os_prim(vec3 p, __global const float* r)
 {
     vec3 q = v3_sub(p, v3((real)r[1], (real)r[2], (real)r[3]));
     if (r[0] == 0.0f) return sd_sphere(q, (real)r[4]);
     return sd_box(q, v3((real)r[4], (real)r[5], (real)r[6]), (real)r[7]);
 }
-inline __attribute__((always_inline)) real os_item(vec3 p, __global const float* item, __global const float* prims)
+OS_ITEM_INLINE real os_item(vec3 p, __global const float* item, __global const float* prims)
 {
     __global const float* r = prims + 8 * (int)item[0];
     const int count = (int)item[1];
