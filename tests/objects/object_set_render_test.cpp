@@ -49,6 +49,15 @@ void each_width(const Case& c, const Check& check, std::initializer_list<int> wi
   }
 }
 
+// The kernel source with the first `from` replaced by `to` (which must be there).
+std::string replace(std::string k, const std::string& from, const std::string& to) {
+  const size_t at = k.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return at == std::string::npos ? k : k.replace(at, from.size(), to);
+}
+// The hits shaded by walking the set, not from the packet's list.
+std::string walked(const std::string& k) { return replace(k, "os_cone_shading(cone)", "os_cone_none()"); }
+
 // How many values (of every plane) differ between two renders of one size.
 size_t differing(const sdfrt::FloatImage& a, const sdfrt::FloatImage& b) {
   EXPECT_EQ(a.data.size(), b.data.size());
@@ -120,12 +129,6 @@ TEST(ObjectSetRender, CameraConesHitWhatTheWholeUnionHits) {
 // A list of the camera's cone alone, made to shade, answers less often
 // (none beside the packet's edges), still with the walk's values; without
 // its check it gives others.
-std::string replace(std::string k, const std::string& from, const std::string& to) {
-  const size_t at = k.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  return at == std::string::npos ? k : k.replace(at, from.size(), to);
-}
-std::string walked(const std::string& k) { return replace(k, "os_cone_shading(cone)", "os_cone_none()"); }
 TEST(ObjectSetRender, HitsShadedFromTheListAsFromTheWalk) {
   auto narrow = [&](const std::string& k) {
     return replace(replace(k, "pixel_angle * 0.8660254f);", "0.0f);"), "if (c.cos_w == c.cos_a) c.list = 0;", "");
@@ -168,11 +171,7 @@ TEST(ObjectSetRender, ListsReadTheirLanesAtEveryWidth) {
 TEST(ObjectSetRender, OcclusionProbesBoundedByTheirHeight) {
   const std::string bounded = "scene_dist_below(TIME_ARG p, below, live, os_cone_none())";
   auto edit = [&](const std::string& to) {
-    return [&bounded, to](std::string k) {
-      const size_t at = k.find(bounded);
-      EXPECT_NE(at, std::string::npos);
-      return at == std::string::npos ? k : k.replace(at, bounded.size(), to);
-    };
+    return [&bounded, to](const std::string& k) { return replace(k, bounded, to); };
   };
   size_t differ_halved = 0;
   for (const Case& c : cases()) {
@@ -216,8 +215,8 @@ TEST(ObjectSetRender, PathTracedHitsBoundTheirNormalsWithTheSameImage) {
       if (!c.seen_whole) continue;
       const sdfrt::FloatImage want = render(code, opt);
       EXPECT_EQ(differing(render(set, opt), want), 0u);
-      differ_tight += differing(render(set, opt, true, [&](std::string s) {
-                                  return s.replace(s.find(bound), bound.size(), "reach * K(0.25f)");
+      differ_tight += differing(render(set, opt, true, [&](const std::string& s) {
+                                  return replace(s, bound, "reach * K(0.25f)");
                                 }),
                                 want);
     }
