@@ -17,7 +17,6 @@
 #else
 #define OS_LIST_CAP 96
 #endif
-#define OS_LIST_STACK 64
 typedef struct os_list
 {
     int n;                                    // items held; -1: too many, walk the hierarchy
@@ -68,39 +67,70 @@ inline bool os_list_add(os_list* l, const os_cone c, int i, scalar lo, scalar hi
 // each shape's, grown by its blends' reach, os_item_reach) along the axis, and
 // whether it reaches into the camera rays' cone as the camera march's walk
 // sees it (os_union: it and every box above it do), so that the march
-// measures the same items from the list as from the walk.
-inline void os_list_gather(os_list* l, const os_cone c, __global const float* s, const int n_nodes, const int n_items)
+// measures the items the walk would. The boxes are read from the gather's
+// hierarchy `g` (ir/object_set.hpp): the balls about eight boxes at a time,
+// tested together, three levels of the walk's hierarchy apart (one at a time
+// the tests waited on each other and on the branches between them: a
+// quarter of the frame at 10 000 objects). Leaves come in the walk's order.
+#define OS_GATHER_STACK 71
+typedef scalar __attribute__((ext_vector_type(8))) os_balls;
+typedef scalar __attribute__((ext_vector_type(4))) os_balls4;
+inline void os_list_gather(os_list* l, const os_cone c, __global const float* s, const int n_nodes, const int n_items,
+                           __global const float* g)
 {
     __global const float* items = s + 8 * n_nodes;
     __global const float* prims = items + 4 * n_items;
+    const int stride = n_items + 4;                // the items' balls' arrays (ir/object_set.hpp)
+    __global const float* balls = g - 4 * stride;  // just before the gather's hierarchy
     l->n = c.on ? 0 : -1;
     l->first = 0;
     l->cos_c = c.cos_w;
     l->sin_c = c.sin_w;
-    int stack[OS_LIST_STACK];  // 2 node + 1 where the boxes above it reach into the camera rays' cone
+    // 2 ref + 1 where the boxes above reach into the camera rays' cone; ref:
+    // a leaf box of the walk's hierarchy, or -1 - a node of the gather's
+    int stack[OS_GATHER_STACK];
     int top = 0;
-    if (c.on) stack[top++] = 1;
+    if (c.on) stack[top++] = -1;  // the gather's root, seen
     while (top > 0) {
-        // each ball is placed about the axis once, and tested against both cones (os_ball_within's terms)
-        const int node = stack[top - 1] >> 1;
-        __global const float* b = s + 8 * node;
-        const scalar hx = 0.5f * (b[3] - b[0]), hy = 0.5f * (b[4] - b[1]), hz = 0.5f * (b[5] - b[2]);
-        const scalar r = sqrt(hx * hx + hy * hy + hz * hz);
-        scalar along;
-        const scalar perp = os_axis_perp(c, b[0] + hx, b[1] + hy, b[2] + hz, &along);
-        const bool seen = (stack[--top] & 1) && perp * c.cos_a - along * c.sin_a <= r;
-        if (!seen && !(perp * c.cos_w - along * c.sin_w <= r)) continue;
-        const int first = (int)b[6], count = (int)b[7];
-        if (count == 0) {
-            stack[top++] = 2 * first + seen;
-            stack[top++] = 2 * (node + 1) + seen;
+        const int e = stack[--top], ref = e >> 1;
+        const bool seen = e & 1;
+        if (ref < 0) {
+            // each ball placed about the axis once, and tested against both cones (os_ball_in_cone's terms)
+            __global const float* w = g + 40 * (-1 - ref);
+            const os_balls x = __builtin_convertvector(vload8(0, w), os_balls) - c.ox;
+            const os_balls y = __builtin_convertvector(vload8(1, w), os_balls) - c.oy;
+            const os_balls z = __builtin_convertvector(vload8(2, w), os_balls) - c.oz;
+            const os_balls r = __builtin_convertvector(vload8(3, w), os_balls);
+            const os_balls along = x * c.ax + y * c.ay + z * c.az;
+            const os_balls wx = x - along * c.ax, wy = y - along * c.ay, wz = z - along * c.az;
+            const os_balls perp = sqrt(wx * wx + wy * wy + wz * wz);
+            const __auto_type camera = perp * c.cos_a - along * c.sin_a <= r;
+            const __auto_type wide = perp * c.cos_w - along * c.sin_w <= r;
+            for (int k = 7; k >= 0; --k) {  // the first is taken off first
+                const bool in_camera = seen && camera[k];
+                if (in_camera || wide[k]) stack[top++] = 2 * (int)w[32 + k] + in_camera;
+            }
             continue;
         }
+        __global const float* b = s + 8 * ref;
+        const int first = (int)b[6], count = (int)b[7];
+        // the leaf's items' balls first, four at a time (slack for rounding): only the items
+        // whose ball reaches into the wider cone are measured shape by shape
+        __global const float* ib = balls + first;
+        const os_balls4 x = __builtin_convertvector(vload4(0, ib), os_balls4) - c.ox;
+        const os_balls4 y = __builtin_convertvector(vload4(0, ib + stride), os_balls4) - c.oy;
+        const os_balls4 z = __builtin_convertvector(vload4(0, ib + 2 * stride), os_balls4) - c.oz;
+        const os_balls4 r = __builtin_convertvector(vload4(0, ib + 3 * stride), os_balls4);
+        const os_balls4 along = x * c.ax + y * c.ay + z * c.az;
+        const os_balls4 wx = x - along * c.ax, wy = y - along * c.ay, wz = z - along * c.az;
+        const os_balls4 perp = sqrt(wx * wx + wy * wy + wz * wz);
+        const __auto_type reaches = perp * c.cos_w - along * c.sin_w <= r + K(1e-5f) * (K(1.0f) + fabs(along) + r);
         for (int i = first; i < first + count; ++i) {
+            if (!reaches[i - first]) continue;
             __global const float* item = items + 4 * i;
             __global const float* p = prims + 8 * (int)item[0];
             const scalar reach = os_item_reach(item);
-            scalar lo = 1e30f, hi = -1e30f;
+            scalar lo = 1e30f, hi = -1e30f, along;
             bool wide = false, camera = false;
             for (int k = 0; k < (int)item[1]; ++k, p += 8) {
                 const scalar radius = os_prim_radius(p) + reach;
@@ -121,6 +151,10 @@ inline void os_list_gather(os_list* l, const os_cone c, __global const float* s,
 //! fn os_union_list
 //! deps: os_list
 //! class: bound
+// The live lanes' largest distance so far: no listed item beginning farther
+// ahead of every lane than that can lower any of them. It only falls as
+// items are measured, so a value taken before is an upper bound of it.
+#define OS_WORST(best, live) LANES_MAX(SEL(K(-1e30f), (best), (live)))
 // os_union for the camera march from the packet's list: the nearest of the
 // listed items some live lane may still reach, and its material. An item
 // whose balls end behind every live lane's point (along the axis) by more
@@ -139,13 +173,20 @@ inline real os_union_list(vec3 p, __global const float* items, __global const fl
     const scalar behind = nearest - c.margin * farthest / c.cos_a;
     while (l->first < l->n && l->hi[l->first] < behind) ++l->first;
     real best = bound, m = (real)(0.0f);
+    // the live lanes' largest nearest so far: once an item has lowered it, a
+    // stale (larger) value still tells where to stop, and it is taken again
+    // only where it would not (OS_WORST)
+    scalar worst = OS_WORST(best, live);
+    bool stale = false;
     for (int k = l->first; k < l->n; ++k) {
-        if (l->lo[k] - farthest > LANES_MAX(SEL(K(-1e30f), best, live))) break;
         if (!l->in_camera[k] || l->hi[k] < behind) continue;
+        if (stale && l->lo[k] - farthest <= worst) worst = OS_WORST(best, live), stale = false;
+        if (l->lo[k] - farthest > worst) break;
         const int i = l->item[k];
         const real d = os_item(p, items + 4 * i, prims);
         m = SEL(m, (real)items[4 * i + 3], d < best);
         best = fmin(best, d);
+        stale = true;
     }
     *mat = m;
     return best;
@@ -174,14 +215,18 @@ inline bool os_union_shade(vec3 p, __global const float* items, __global const f
     const real depth = along * l->sin_c - sqrt(v3_dot(w, w)) * l->cos_c - K(1e-5f) * (K(1.0f) + fabs(along));
     const scalar nearest = LANES_MIN(SEL(K(1e30f), along, live)), farthest = LANES_MAX(SEL(K(-1e30f), along, live));
     real best = bound, m = (real)(0.0f);
+    scalar worst = OS_WORST(best, live);  // taken again only where a stale value would not decide
+    bool stale = false;
     for (int k = 0; k < l->n; ++k) {
-        const scalar worst = LANES_MAX(SEL(K(-1e30f), best, live));
+        if (stale && l->lo[k] - farthest <= worst && nearest - l->hi[k] <= worst)
+            worst = OS_WORST(best, live), stale = false;
         if (l->lo[k] - farthest > worst) break;
         if (nearest - l->hi[k] > worst) continue;
         const int i = l->item[k];
         const real d = os_item(p, items + 4 * i, prims);
         m = SEL(m, (real)items[4 * i + 3], d < best);
         best = fmin(best, d);
+        stale = true;
     }
     if (M_ANY(live & (best > depth))) return false;
     *d_out = best;

@@ -94,6 +94,75 @@ TEST(ObjectSetPass, CostStaysUnderTheCapButCountsPiledUpObjects) {
   EXPECT_GT(estimated_cost_per_sample(piled), 10 * estimated_cost_per_sample(spread));
 }
 
+// The camera packets' gather (os_list_gather) reads the hierarchy through
+// its own nodes: every leaf of the walk's hierarchy once, in the walk's
+// order, each under balls that hold its box; and a ball about each item
+// that holds its shapes' balls as the gather measures them.
+TEST(ObjectSetPack, GatherHierarchyHoldsEveryLeafInTheWalksOrder) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<os::Item> items(777);
+  for (size_t i = 0; i < items.size(); ++i) {
+    items[i].blend = i % 3 == 0 ? 0.1 : 0;
+    for (size_t k = 0; k < (i % 3 == 0 ? 3u : 1u); ++k) {
+      os::Prim p;
+      p.type = (i + k) % 2 ? os::kBox : os::kSphere;
+      p.center = {40 * u(rng), 40 * u(rng), 5 * u(rng)};
+      p.size = {0.3 + 0.2 * u(rng), 0.3 + 0.2 * u(rng), 0.3 + 0.2 * u(rng)};
+      items[i].prims.push_back(p);
+    }
+  }
+  const std::vector<double> q = os::pack(items, 0);
+  const os::View v{q};
+  std::vector<size_t> walk, gathered;  // leaves, depth first, left before right
+  auto descend = [&](auto& self, size_t n) -> void {
+    if (v.node(n)[7] > 0) return walk.push_back(n);
+    self(self, n + 1), self(self, size_t(v.node(n)[6]));
+  };
+  descend(descend, 0);
+  auto holds = [&](const double* g, size_t k, const double* box) {
+    const double r = g[3 * os::kGatherWidth + k];
+    for (int corner = 0; corner < 8; ++corner) {
+      double d2 = 0;
+      for (int a = 0; a < 3; ++a) d2 += std::pow(box[(corner >> a & 1) * 3 + a] - g[a * os::kGatherWidth + k], 2);
+      if (std::sqrt(d2) > r) return false;
+    }
+    return true;
+  };
+  const double* gather = q.data() + os::kHeader + v.gather_at();
+  // each slot's ball holds the boxes of the leaves below it
+  auto visit = [&](auto& self, size_t g, std::vector<std::pair<const double*, size_t>> above) -> void {
+    const double* node = gather + g * os::kGatherFloats;
+    for (size_t k = 0; k < size_t(os::kGatherWidth); ++k) {
+      if (node[3 * os::kGatherWidth + k] < 0) continue;
+      const double ref = node[4 * os::kGatherWidth + k];
+      auto path = above;
+      path.push_back({node, k});
+      if (ref < 0) {
+        self(self, size_t(-1 - ref), path);
+        continue;
+      }
+      gathered.push_back(size_t(ref));
+      for (const auto& [n, slot] : path) ASSERT_TRUE(holds(n, slot, v.node(size_t(ref)))) << ref;
+    }
+  };
+  visit(visit, 0, {});
+  EXPECT_EQ(gathered, walk);
+  const size_t stride = v.items() + os::kItemBallPad;
+  const double* balls = q.data() + os::kHeader + v.item_balls_at();
+  for (size_t i = 0; i < v.items(); ++i) {
+    const double* item = v.item(i);
+    const double reach = (item[1] - 1) * 0.25 * item[2];
+    for (size_t k = 0; k < size_t(item[1]); ++k) {
+      const double* p = v.prim(size_t(item[0]) + k);
+      const double radius = (p[0] == double(os::kSphere) ? p[4] : std::sqrt(p[4] * p[4] + p[5] * p[5] + p[6] * p[6])) + reach;
+      const double apart = std::hypot(p[1] - balls[i], p[2] - balls[stride + i], p[3] - balls[2 * stride + i]);
+      EXPECT_LE(apart + radius, balls[3 * stride + i]) << i;
+    }
+  }
+  for (size_t i = v.items(); i < stride; ++i) EXPECT_LT(balls[3 * stride + i], -1e29);  // padding no cone reaches
+}
+
 TEST(ObjectSetReference, EvaluatesTheUnionItReplaces) {
   for (const Case& c : cases()) {
     SCOPED_TRACE(c.name);

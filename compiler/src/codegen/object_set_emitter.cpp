@@ -111,7 +111,8 @@ std::string camera_list_gather(const ir::Module& m) {
     set = &n;
   }
   const os::View v{set->params};
-  return fmt::format("os_list_gather(&list, cone, scene_data + {}, {}, {});", v.offset(), v.nodes(), v.items());
+  return fmt::format("os_list_gather(&list, cone, scene_data + {}, {}, {}, scene_data + {});", v.offset(), v.nodes(),
+                     v.items(), v.offset() + v.gather_at());
 }
 
 std::string scene_data_macros(bool animated, int unlocked) {

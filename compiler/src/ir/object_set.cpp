@@ -4,6 +4,7 @@
 #include "sdfc/ir/object_set.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
@@ -66,6 +67,79 @@ struct Build {
   }
 };
 
+// The gather's hierarchy (kGatherFloats per node): each node holds the
+// balls about the boxes kGatherLevels levels below one box of the hierarchy
+// (or the leaves above that), left to right, so the gather visits the leaves
+// in the order the boxes' walk does; a ball's index is its box's where that
+// is a leaf, else -1 - the gather node holding its boxes. The balls are the
+// ones the kernel tested about each box, computed as it did in floats and
+// grown by a few of their last digits, so rounding cannot make them smaller.
+struct GatherTree {
+  const std::vector<std::array<double, kNodeFloats>>& nodes;
+  std::vector<std::array<double, kGatherFloats>> out;
+
+  static bool leaf(const std::array<double, kNodeFloats>& n) { return n[7] > 0; }
+  void frontier(size_t n, int levels, std::vector<size_t>& to) const {
+    if (levels == 0 || leaf(nodes[n])) return to.push_back(n);
+    frontier(n + 1, levels - 1, to);  // the left child follows its parent
+    frontier(size_t(nodes[n][6]), levels - 1, to);
+  }
+  size_t node(size_t n) {
+    std::vector<size_t> below;
+    frontier(n, kGatherLevels, below);
+    size_t at = out.size();
+    out.push_back({});
+    for (size_t k = 0; k < size_t(kGatherWidth); ++k) {
+      out[at][3 * kGatherWidth + k] = -1e30;  // no box: a ball no cone reaches
+      if (k >= below.size()) continue;
+      const auto& b = nodes[below[k]];
+      float h[3], c[3], r2 = 0, far = 0;
+      for (int i = 0; i < 3; ++i) {
+        h[i] = 0.5f * (float(b[3 + i]) - float(b[i]));
+        c[i] = float(b[i]) + h[i];
+        r2 += h[i] * h[i];
+        far = std::max(far, std::fabs(c[i]));
+      }
+      const float r = std::sqrt(r2);
+      for (int i = 0; i < 3; ++i) out[at][i * kGatherWidth + k] = c[i];
+      out[at][3 * kGatherWidth + k] = double(r) * (1 + 1e-6) + 1e-6 * double(std::max(far, r));
+      const double ref = leaf(b) ? double(below[k]) : -1.0 - double(node(below[k]));
+      out[at][4 * kGatherWidth + k] = ref;
+    }
+    return at;
+  }
+};
+
+// A ball about each item (in the hierarchy's order) holding its shapes'
+// balls as the gather measures them (a sphere's, or the one through a box's
+// corners), grown by the blend's reach; as four arrays, x, y and z of the
+// centres and the radii, each padded with balls no cone reaches.
+void append_item_balls(std::vector<double>& q, const std::vector<Item>& items, const std::vector<size_t>& order) {
+  const size_t n = items.size() + kItemBallPad;
+  std::vector<double> balls(4 * n, 0.0);
+  for (size_t k = items.size(); k < n; ++k) balls[3 * n + k] = -1e30;
+  for (size_t k = 0; k < items.size(); ++k) {
+    const Item& it = items[order[k]];
+    const double reach = double(it.prims.size() - 1) * 0.25 * it.blend;
+    auto radius = [&](const Prim& p) {
+      return (p.type == kSphere ? p.size[0] : std::sqrt(p.size[0] * p.size[0] + p.size[1] * p.size[1] + p.size[2] * p.size[2])) + reach;
+    };
+    Vec3d lo = it.prims[0].center, hi = lo;
+    for (const Prim& p : it.prims)
+      for (int i = 0; i < 3; ++i) lo[i] = std::min(lo[i], p.center[i]), hi[i] = std::max(hi[i], p.center[i]);
+    double r = 0;
+    for (const Prim& p : it.prims) {
+      double d2 = 0;
+      for (int i = 0; i < 3; ++i) d2 += (p.center[i] - 0.5 * (lo[i] + hi[i])) * (p.center[i] - 0.5 * (lo[i] + hi[i]));
+      r = std::max(r, std::sqrt(d2) + radius(p));
+    }
+    double far = 0;  // the centre is read as a float: grow the ball by more than that rounds
+    for (int i = 0; i < 3; ++i) balls[size_t(i) * n + k] = 0.5 * (lo[i] + hi[i]), far = std::max(far, std::fabs(lo[i]) + std::fabs(hi[i]));
+    balls[3 * n + k] = r * (1 + 1e-6) + 1e-6 * far;
+  }
+  q.insert(q.end(), balls.begin(), balls.end());
+}
+
 }  // namespace
 
 std::vector<double> pack(std::vector<Item> items, size_t offset) {
@@ -88,6 +162,10 @@ std::vector<double> pack(std::vector<Item> items, size_t offset) {
   for (size_t i : b.order)
     for (const Prim& p : items[i].prims)
       q.insert(q.end(), {double(p.type), p.center[0], p.center[1], p.center[2], p.size[0], p.size[1], p.size[2], p.edge});
+  append_item_balls(q, items, b.order);
+  GatherTree g{b.nodes, {}};
+  g.node(0);
+  for (const auto& n : g.out) q.insert(q.end(), n.begin(), n.end());
   return q;
 }
 

@@ -13,7 +13,12 @@
 // `first`; a leaf holds items [first, first + count)), the items
 // (kItemFloats each: first primitive, primitive count, blend radius,
 // material id) and the primitives (kPrimFloats each: type, centre xyz,
-// sphere radius or box half extents xyz, box edge radius).
+// sphere radius or box half extents xyz, box edge radius); then for the
+// camera packets' gather a ball about each item (its shapes' balls grown by
+// its blend's reach: the items' centres x, then y, z and radii, each
+// kItemBallPad longer than the items) and the hierarchy as the gather reads
+// it (kGatherFloats per node: every third level of the boxes', with the
+// bounding balls of up to eight boxes below).
 #include <cstddef>
 #include <vector>
 
@@ -38,6 +43,14 @@ inline constexpr size_t kHeader = 4;
 inline constexpr size_t kNodeFloats = 8, kItemFloats = 4, kPrimFloats = 8;
 inline constexpr size_t kLeafItems = 4;  // items per leaf of the hierarchy
 inline constexpr int kMaxDepth = 30;     // the kernel's stack holds 2 entries per level (OS_STACK in the stdlib)
+// The gather's hierarchy: a node holds the balls about up to kGatherWidth
+// boxes of the hierarchy kGatherLevels levels below its own box, so a packet
+// tests them together; its stack (OS_GATHER_STACK in the stdlib) holds
+// kGatherWidth - 1 entries per level and one more.
+inline constexpr int kGatherLevels = 3, kGatherWidth = 1 << kGatherLevels;
+inline constexpr size_t kGatherFloats = 5 * kGatherWidth;  // centres x, y, z, radii, then the boxes' indices
+inline constexpr size_t kItemBallPad = kLeafItems;  // a leaf's balls are read kLeafItems at a time
+inline constexpr int kGatherStack = (kGatherWidth - 1) * ((kMaxDepth + kGatherLevels - 1) / kGatherLevels) + 1;
 
 enum PrimType { kSphere = 0, kBox = 1 };
 
@@ -76,6 +89,9 @@ struct View {
   const double* node(size_t i) const { return q.data() + kHeader + i * kNodeFloats; }
   const double* item(size_t i) const { return q.data() + kHeader + nodes() * kNodeFloats + i * kItemFloats; }
   const double* prim(size_t i) const { return item(items()) + i * kPrimFloats; }
+  // Where the items' balls and the gather's hierarchy begin, counted from offset().
+  size_t item_balls_at() const { return nodes() * kNodeFloats + items() * kItemFloats + prims() * kPrimFloats; }
+  size_t gather_at() const { return item_balls_at() + 4 * (items() + kItemBallPad); }
 };
 
 }  // namespace sdfc::ir::object_set
