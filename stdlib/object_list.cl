@@ -65,13 +65,15 @@ inline bool os_list_add(os_list* l, const os_cone c, int i, scalar lo, scalar hi
 // Every item of the set (nodes and items as os_union reads them) that
 // reaches into the wider cone, with the span of its balls (os_item_in_cone's:
 // each shape's, grown by its blends' reach, os_item_reach) along the axis, and
-// whether it reaches into the camera rays' cone as the camera march's walk
-// sees it (os_union: it and every box above it do), so that the march
-// measures the items the walk would. The boxes are read from the gather's
-// hierarchy `g` (ir/object_set.hpp): the balls about eight boxes at a time,
-// tested together, three levels of the walk's hierarchy apart (one at a time
-// the tests waited on each other and on the branches between them: a
-// quarter of the frame at 10 000 objects). Leaves come in the walk's order.
+// whether it reaches into the camera rays' cone, and so do the boxes above
+// it (the walk's test, os_union: there every box above; here the boxes of
+// every third level, which may let the march measure an item more, never
+// one less). The boxes are read from the gather's hierarchy `g`
+// (ir/object_set.hpp): the balls about eight boxes at a time, tested
+// together, three levels of the walk's hierarchy apart (one at a time the
+// tests waited on each other and on the branches between them: a quarter of
+// the kernel at 10 000 objects). Leaves come in the walk's order, so the
+// list holds the same items in the same order.
 #define OS_GATHER_STACK 71
 typedef scalar __attribute__((ext_vector_type(8))) os_balls;
 typedef scalar __attribute__((ext_vector_type(4))) os_balls4;
