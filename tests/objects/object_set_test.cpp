@@ -161,6 +161,10 @@ TEST(ObjectSetPack, GatherHierarchyHoldsEveryLeafInTheWalksOrder) {
     }
   }
   for (size_t i = v.items(); i < stride; ++i) EXPECT_LT(balls[3 * stride + i], -1e29);  // padding no cone reaches
+  // the kernel's stack holds the deepest hierarchy the host builds
+  const std::string k = codegen::emit_opencl(test::compile_text(scene(100)), {16}).source;
+  ASSERT_NE(k.find("os_list_gather(&list, cone, "), std::string::npos);
+  EXPECT_NE(k.find(fmt::format("#define OS_GATHER_STACK {}\n", os::kGatherStack)), std::string::npos);
 }
 
 TEST(ObjectSetReference, EvaluatesTheUnionItReplaces) {
